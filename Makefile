@@ -1,0 +1,54 @@
+# The two commands of the README: `make run` (install what is missing, start the app on
+# http://127.0.0.1:8000) and `make test` (install what is missing, run every test).
+# Installing is idempotent: stamps record what was installed for which inputs.
+
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+PY_STAMP := $(VENV)/.installed-$(shell cat pyproject.toml | md5sum | cut -c1-12)
+NPM_STAMP := node_modules/.installed-$(shell cat package-lock.json 2>/dev/null | md5sum | cut -c1-12)
+FRONT_SRC := $(shell find frontend/src frontend/index.html frontend/vite.config.* -type f 2>/dev/null)
+HOST ?= 127.0.0.1
+PORT ?= 8000
+
+.PHONY: run test install test-py test-front test-e2e frontend data train train-smoke chromium clean
+
+run: install frontend/dist/index.html
+	$(BIN)/interplay serve --host $(HOST) --port $(PORT)
+
+test: install frontend/dist/index.html chromium
+	$(MAKE) test-py test-front test-e2e
+
+install: $(PY_STAMP) $(NPM_STAMP)
+
+$(PY_STAMP): pyproject.toml
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev]'
+	rm -f $(VENV)/.installed-* && touch $@
+
+$(NPM_STAMP): package.json package-lock.json frontend/package.json e2e/package.json
+	npm ci --no-audit --no-fund --loglevel=error
+	rm -f node_modules/.installed-* && touch $@
+
+frontend/dist/index.html: $(NPM_STAMP) $(FRONT_SRC)
+	npm run build --workspace frontend
+
+# Debian's Chromium for the end-to-end tests (never a browser download).
+chromium:
+	@command -v chromium >/dev/null || { apt-get update -qq && apt-get install -y -qq chromium >/dev/null; }
+
+test-py:
+	$(BIN)/python -m pytest -q
+
+test-front:
+	npm test --workspace frontend
+
+test-e2e:
+	npm test --workspace e2e
+
+# Rebuild the processed data set from ../shared/data (not needed to run or test the app).
+data: install
+	$(BIN)/interplay data build
+
+clean:
+	rm -rf $(VENV) node_modules frontend/dist
