@@ -2,10 +2,12 @@
 processed data set stored in the repo (`models/data/`), loaded once and shared.
 
 Storage (written by `interplay data build`, read here):
-  models/data/motions.npz   joints (N, 22, 3) float16, every person-frame of every clip
-                            concatenated; offsets (P, 22, 3) float32, one row per person.
-  models/data/index.json    {"fps": 20, "clips": [ClipMeta...]} with, per clip, its people as
-                            (start, frames, offsets_row) into the arrays above.
+  models/data/<source>.npz  per source (so each licence's derived data stays in its own file:
+                            HDM05 is CC BY-SA, CMU has its own terms): joints (N, 22, 3) float16,
+                            every person-frame of that source's clips concatenated; offsets
+                            (P, 22, 3) float32, one row per person.
+  models/data/index.json    {"fps": 20, "clips": [ClipMeta...]} with, per clip, its file and its
+                            people as (start, frames, offsets_row) into that file's arrays.
 """
 
 from __future__ import annotations
@@ -56,31 +58,37 @@ class Clip:
 
 def save_clips(clips: list[Clip], out_dir: Path) -> None:
     out_dir.mkdir(parents=True, exist_ok=True)
-    joints, offsets, metas, start = [], [], [], 0
-    for c in clips:
-        people = []
-        for p, off in zip(c.people, c.offsets):
-            people.append({"start": start, "frames": int(p.shape[0]), "offsets_row": len(offsets)})
-            joints.append(p.astype(np.float16))
-            offsets.append(off.astype(np.float32))
-            start += p.shape[0]
-        metas.append({
-            "id": c.id, "source": c.source, "label": c.label, "prompt": c.prompt,
-            "split": c.split, "synthetic": c.synthetic, "licence": c.licence, "people": people,
-            "captions": [vars(cap) for cap in c.captions], "meta": c.meta,
-        })
-    np.savez_compressed(out_dir / "motions.npz", joints=np.concatenate(joints),
-                        offsets=np.stack(offsets))
+    metas = []
+    for source in sorted({c.source for c in clips}):
+        joints, offsets, start = [], [], 0
+        for c in (c for c in clips if c.source == source):
+            people = []
+            for p, off in zip(c.people, c.offsets):
+                people.append({"start": start, "frames": int(p.shape[0]), "offsets_row": len(offsets)})
+                joints.append(p.astype(np.float16))
+                offsets.append(off.astype(np.float32))
+                start += p.shape[0]
+            metas.append({
+                "id": c.id, "source": c.source, "file": f"{source}.npz", "label": c.label,
+                "prompt": c.prompt, "split": c.split, "synthetic": c.synthetic,
+                "licence": c.licence, "people": people,
+                "captions": [vars(cap) for cap in c.captions], "meta": c.meta,
+            })
+        np.savez_compressed(out_dir / f"{source}.npz", joints=np.concatenate(joints),
+                            offsets=np.stack(offsets))
     (out_dir / "index.json").write_text(json.dumps({"fps": FPS, "clips": metas}, indent=1))
 
 
 def load_clips(data_dir: Path = DATA_DIR) -> list[Clip]:
     data_dir = Path(data_dir)
     index = json.loads((data_dir / "index.json").read_text())
-    arrays = np.load(data_dir / "motions.npz")
-    joints, offsets = arrays["joints"].astype(np.float32), arrays["offsets"]
+    arrays: dict[str, tuple[np.ndarray, np.ndarray]] = {}
     clips = []
     for m in index["clips"]:
+        if m["file"] not in arrays:
+            with np.load(data_dir / m["file"]) as f:
+                arrays[m["file"]] = (f["joints"].astype(np.float32), f["offsets"])
+        joints, offsets = arrays[m["file"]]
         people = [joints[p["start"]:p["start"] + p["frames"]] for p in m["people"]]
         offs = [offsets[p["offsets_row"]] for p in m["people"]]
         clips.append(Clip(id=m["id"], source=m["source"], people=people, offsets=offs,
