@@ -1,0 +1,179 @@
+"""`interplay data build`: every raw capture source in ../shared/data → the processed data set
+in models/data (one npz per source, index.json, README.md data card).
+
+Each source is retargeted onto the 22-joint skeleton at 20 fps and canonicalised by its own
+module under `interplay.motion.retarget`; this module only walks the folders, labels, splits
+by trial (never by window) and captions.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import sys
+import time
+from pathlib import Path
+
+from ..motion.clip import DATA_DIR, Caption, Clip, save_clips
+from .card import write_card
+from .labels import cmu_prompt, label_family
+
+REPO = Path(__file__).resolve().parents[3]
+DEFAULT_SOURCE = REPO.parent / "shared" / "data"
+# HDM05's actor "mm" is held out entirely as the test set: unseen performer, every class.
+HDM05_TEST_ACTOR = "mm"
+SPLIT_SHARES = {"test": 0.15, "val": 0.10}
+
+
+def _stable_rank(key: str) -> str:
+    return hashlib.sha1(key.encode()).hexdigest()
+
+
+def stratified_split(ids_by_family: dict[str, list[str]], min_test: int = 1) -> dict[str, str]:
+    """Trial id → split. Within each family, trials are ordered by a stable hash; the first
+    15% (at least one when the family has ≥ 3 trials) go to test, the next 10% to val."""
+    out = {}
+    for ids in ids_by_family.values():
+        ranked = sorted(ids, key=_stable_rank)
+        n = len(ranked)
+        n_test = max(min_test if n >= 3 else 0, round(n * SPLIT_SHARES["test"]))
+        n_val = max(1 if n >= 6 else 0, round(n * SPLIT_SHARES["val"]))
+        for i, trial in enumerate(ranked):
+            out[trial] = "test" if i < n_test else "val" if i < n_test + n_val else "train"
+    return out
+
+
+def build_cmu_bvh(src: Path) -> list[Clip]:
+    from ..motion.retarget.cmu_daz import load_cmu_bvh, read_cmu_index
+
+    index = read_cmu_index(src / "cmu-index" / "cmu_index.csv")
+    clips = []
+    for path in sorted((src / "cmu-bvh").glob("*/*.bvh")):
+        subject, trial = (int(x) for x in path.stem.split("_")[:2])
+        description, index_fps = index.get((subject, trial), ("unknown", 120))
+        joints, offsets, meta = load_cmu_bvh(path)
+        meta.update({"file": f"cmu-bvh/{path.parent.name}/{path.name}", "index_fps": index_fps})
+        clips.append(Clip(id=f"cmu:{path.stem}", source="cmu-bvh", people=[joints], offsets=[offsets],
+                          label=description, prompt=cmu_prompt(description), licence="CMU", meta=meta))
+    return clips
+
+
+def build_salsa(src: Path) -> list[Clip]:
+    from ..motion.retarget.cmu_daz import load_salsa_pair
+
+    clips = []
+    for lead in sorted((src / "cmu-salsa" / "60").glob("60_*.bvh")):
+        pair = lead.stem.split("_")[1]
+        follow = src / "cmu-salsa" / "61" / lead.name.replace("60_", "61_", 1)
+        if not follow.exists():
+            continue
+        people, offsets, meta = load_salsa_pair(lead, follow)
+        meta.update({"files": [f"cmu-salsa/60/{lead.name}", f"cmu-salsa/61/{follow.name}"],
+                     "roles": ["lead (subject 60)", "follow (subject 61)"]})
+        clips.append(Clip(id=f"salsa:{pair}", source="cmu-salsa", people=people, offsets=offsets,
+                          label="salsa dance", prompt=cmu_prompt("salsa dance"), licence="CMU",
+                          meta=meta))
+    return clips
+
+
+def build_hdm05(src: Path) -> list[Clip]:
+    from ..motion.retarget.hdm05 import hdm05_prompt, load_hdm05
+
+    clips = []
+    for path in sorted((src / "hdm05").glob("*/*.amc")):
+        actor = path.stem.split("_")[1]
+        joints, offsets, meta = load_hdm05(path, src / "hdm05" / "asf" / f"HDM_{actor}.asf")
+        cls = path.parent.name
+        meta.update({"file": f"hdm05/{cls}/{path.name}", "actor": actor})
+        clips.append(Clip(id=f"hdm05:{path.stem}", source="hdm05", people=[joints], offsets=[offsets],
+                          label=cls, prompt=hdm05_prompt(cls), licence="CC BY-SA 3.0 (HDM05)",
+                          meta=meta))
+    return clips
+
+
+def build_cmu_8action(src: Path) -> list[Clip]:
+    from ..motion.retarget.cmu_8action import cmu_8action_prompt, load_cmu_8action
+
+    clips = []
+    for path in sorted((src / "cmu-8action").glob("*/*/*.txt")):
+        folder, action = path.parts[-3], path.parts[-2]
+        joints, offsets, meta = load_cmu_8action(path)
+        meta.update({"file": f"cmu-8action/{folder}/{action}/{path.name}", "folder": folder})
+        clips.append(Clip(id=f"8action:{folder}/{path.stem}", source="cmu-8action", people=[joints],
+                          offsets=[offsets], label=action, prompt=cmu_8action_prompt(action),
+                          licence="CMU", meta=meta))
+    return clips
+
+
+def assign_splits(clips: list[Clip]) -> None:
+    """By trial, never by window. HDM05: one held-out actor is test; cmu-8action keeps its own
+    train/test folders; CMU trials and salsa pairs are split per action family by stable hash."""
+    groups: dict[str, list[str]] = {}
+    hdm_rest: dict[str, list[str]] = {}
+    for c in clips:
+        if c.source == "hdm05":
+            if c.meta.get("actor") == HDM05_TEST_ACTOR:
+                c.split = "test"
+            else:
+                hdm_rest.setdefault(c.label, []).append(c.id)
+        elif c.source == "cmu-8action":
+            c.split = "test" if c.meta.get("folder") == "test" else "train"
+        else:
+            groups.setdefault(f"{c.source}:{label_family(c.prompt)}", []).append(c.id)
+    split = stratified_split(groups)
+    # Held-out actor already gives HDM05 its test set; the others only give a validation share.
+    for ids in hdm_rest.values():
+        ranked = sorted(ids, key=_stable_rank)
+        for i, trial in enumerate(ranked):
+            split[trial] = "val" if i < max(1, round(len(ranked) * SPLIT_SHARES["val"])) else "train"
+    for c in clips:
+        if c.id in split:
+            c.split = split[c.id]
+
+
+def add_captions(clips: list[Clip]) -> None:
+    from ..motion.posecodes import caption_clip
+
+    for c in clips:
+        caps: list[Caption] = []
+        for person, joints in enumerate(c.people):
+            for cap in caption_clip(joints):
+                if len(c.people) > 1:
+                    cap = Caption(cap.start, cap.end, cap.part, f"person {person + 1}: {cap.text}")
+                caps.append(cap)
+        c.captions = caps
+
+
+BUILDERS = {"cmu-bvh": build_cmu_bvh, "cmu-salsa": build_salsa, "hdm05": build_hdm05,
+            "cmu-8action": build_cmu_8action}
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="interplay data build", description=__doc__)
+    ap.add_argument("--source", type=Path, default=DEFAULT_SOURCE, help="raw data folder (../shared/data)")
+    ap.add_argument("--out", type=Path, default=DATA_DIR, help="output folder (models/data)")
+    ap.add_argument("--only", nargs="*", choices=sorted(BUILDERS), help="build only these sources")
+    args = ap.parse_args(argv)
+    if not args.source.is_dir():
+        print(f"error: raw data folder {args.source} not found (pass --source)", file=sys.stderr)
+        return 2
+    clips: list[Clip] = []
+    for name, build in BUILDERS.items():
+        if args.only and name not in args.only:
+            continue
+        t0 = time.time()
+        got = build(args.source)
+        print(f"{name:12s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
+        clips.extend(got)
+    assign_splits(clips)
+    t0 = time.time()
+    add_captions(clips)
+    print(f"captions     {sum(len(c.captions) for c in clips):4d}       {time.time() - t0:6.1f} s")
+    save_clips(clips, args.out)
+    write_card(clips, args.out)
+    print(f"wrote {len(clips)} clips to {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
