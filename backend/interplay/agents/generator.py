@@ -1,0 +1,170 @@
+"""The generator the studio calls: plan a request, then stream its frames segment by segment.
+
+This version is retrieval (motion matching): every plan segment is filled with captured
+motion found by text (`retrieval.RetrievalIndex`) and stitched (`stitch.Stitcher`). For two
+people it uses a two-person capture when the prompt matches one (salsa); otherwise it composes
+two single-person captures, facing each other 1.5 m apart (side by side when they travel),
+and marks the segment as synthetic.
+
+    gen = load_generator()                      # heavy loading once (clips, encoder, index)
+    req = Request("a person walks forward then jumps", persons=1, seconds=6, seed=3)
+    plan = gen.plan(req)                        # JSON: segments, chosen captures, seed
+    for start, chunk in gen.stream(req, plan):  # chunk: one (n, 22, 3) array per person
+        ...
+    motion = gen.generate(req)                  # Motion with plan and metrics
+"""
+
+from __future__ import annotations
+
+import secrets
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Iterator
+
+import numpy as np
+
+from ..motion.clip import DATA_DIR, default_clips
+from ..motion.motion import Motion
+from ..motion.skeleton import FPS, PELVIS
+from .planner_basic import basic_plan
+from .retrieval import RetrievalIndex
+from .stitch import Stitcher
+
+CHUNK = 40          # frames per streamed chunk at most (2 s)
+SPACING = 1.5       # metres between two composed people
+TRAVEL = 1.0        # metres of pelvis travel that make composed people stand side by side
+
+
+@dataclass(frozen=True)
+class Request:
+    prompt: str
+    persons: int = 1
+    seconds: float = 6.0
+    seed: int | None = None
+
+    def __post_init__(self):
+        if self.persons not in (1, 2):
+            raise ValueError(f"persons must be 1 or 2, got {self.persons!r}")
+        if not isinstance(self.seconds, (int, float)) or not 0 < self.seconds <= 60:
+            raise ValueError(f"seconds must be in (0, 60], got {self.seconds!r}")
+        if self.seed is not None and (not isinstance(self.seed, int) or isinstance(self.seed, bool)):
+            raise ValueError(f"seed must be an integer, got {self.seed!r}")
+
+
+def _rng(seed: int, segment: int) -> np.random.Generator:
+    return np.random.default_rng([seed % 2**63, segment])
+
+
+def _optional(name: str):
+    """A function of interplay.motion.metrics if that module exists yet, else None."""
+    try:
+        from ..motion import metrics
+    except ImportError:
+        return None
+    return getattr(metrics, name, None)
+
+
+class Generator:
+    def __init__(self, index: RetrievalIndex):
+        self.index = index
+
+    # -- planning ----------------------------------------------------------------------------
+    def _travel(self, track: list[dict]) -> float:
+        """Ground distance the pelvis covers over a track's first piece."""
+        p = track[0]
+        pelvis = self.index.clip(p["clip"]).people[p["people"][0]][[p["start"], p["end"] - 1], PELVIS]
+        return float(np.hypot(*(pelvis[1] - pelvis[0])[[0, 2]]))
+
+    def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator) -> dict:
+        """The captured pieces for one segment: {"mode", "tracks", "synthetic"[, "arrangement"]}."""
+        idx = self.index
+        if persons == 2 and idx.use_pair(prompt):
+            return {"mode": "pair", "synthetic": False,
+                    "tracks": [idx.track(prompt, frames, rng, pair=True)]}
+        first = idx.track(prompt, frames, rng)
+        if persons == 1:
+            return {"mode": "single", "synthetic": False, "tracks": [first]}
+        second = idx.track(prompt, frames, rng, exclude={first[0]["clip"]})
+        travel = max(self._travel(first), self._travel(second))
+        return {"mode": "composed", "synthetic": True, "tracks": [first, second],
+                "arrangement": "side_by_side" if travel > TRAVEL else "facing"}
+
+    def plan(self, req: Request) -> dict:
+        """The basic plan plus, per segment, the captures chosen for it and the seed used."""
+        plan = basic_plan(req.prompt, req.persons, req.seconds)
+        seed = req.seed if req.seed is not None else secrets.randbelow(2**31)
+        for seg in plan["segments"]:
+            seg["retrieval"] = self.retrieve(seg["prompt"], seg["end"] - seg["start"], req.persons,
+                                             _rng(seed, seg["index"]))
+        clips = {p["clip"] for s in plan["segments"] for t in s["retrieval"]["tracks"] for p in t}
+        plan.update({"seed": seed, "generator": "retrieval",
+                     "synthetic": any(s["retrieval"]["synthetic"] for s in plan["segments"]),
+                     "sources": [{"clip": c, "licence": self.index.clip(c).licence,
+                                  "label": self.index.clip(c).label} for c in sorted(clips)]})
+        return plan
+
+    # -- frames ------------------------------------------------------------------------------
+    def _placement(self, arrangement: str) -> list[tuple[np.ndarray, float]]:
+        """Start pelvis position and facing yaw of each composed person."""
+        half = SPACING / 2
+        if arrangement == "side_by_side":
+            return [(np.array([half, 0.0, 0.0]), 0.0), (np.array([-half, 0.0, 0.0]), 0.0)]
+        return [(np.array([-half, 0.0, 0.0]), np.pi / 2), (np.array([half, 0.0, 0.0]), -np.pi / 2)]
+
+    def _render(self, stitcher: Stitcher, retrieval: dict, persons: int) -> list[np.ndarray]:
+        """One segment's frames per person, continuing what the stitcher has output so far."""
+        tracks = [self.index.pieces(t) for t in retrieval["tracks"]]
+        if retrieval["mode"] == "pair":
+            parts = [stitcher.add_pair(piece) for piece in tracks[0]]
+            return [np.concatenate([p[i] for p in parts]) for i in range(2)]
+        if len(tracks) != persons:
+            raise ValueError(f"segment has {len(tracks)} tracks for {persons} people")
+        place = self._placement(retrieval.get("arrangement", "facing")) if persons == 2 else [None]
+        out = []
+        for person, track in enumerate(tracks):
+            frames = [stitcher.add_single(person, piece[0], place[person]) for piece in track]
+            out.append(np.concatenate(frames))
+        return out
+
+    def stream(self, req: Request, plan: dict) -> Iterator[tuple[int, list[np.ndarray]]]:
+        """(start frame, one (n, 22, 3) float32 chunk per person), in order, n ≤ 40, covering
+        every frame of the plan (round(seconds × 20))."""
+        persons, seed = plan.get("persons", req.persons), plan.get("seed", req.seed or 0)
+        stitcher, expected = Stitcher(persons), 0
+        for seg in plan["segments"]:
+            start, end = int(seg["start"]), int(seg["end"])
+            if start != expected or end <= start:
+                raise ValueError(f"plan segments must tile the motion; segment {seg.get('index')} "
+                                 f"spans {start}–{end}, expected to start at {expected}")
+            retrieval = seg.get("retrieval") or self.retrieve(seg["prompt"], end - start, persons,
+                                                              _rng(seed, seg.get("index", 0)))
+            frames = self._render(stitcher, retrieval, persons)
+            if any(len(f) != end - start for f in frames):
+                raise ValueError(f"segment {seg.get('index')}: the plan's pieces do not last "
+                                 f"{end - start} frames")
+            for a in range(0, end - start, CHUNK):
+                yield start + a, [f[a:a + CHUNK] for f in frames]
+            expected = end
+
+    def generate(self, req: Request) -> Motion:
+        """Plan, all frames, and clip metrics (+ per-frame highlights) when available."""
+        plan = self.plan(req)
+        chunks = [people for _, people in self.stream(req, plan)]
+        people = [np.concatenate([c[i] for c in chunks]) for i in range(req.persons)]
+        clip_metrics, frame_highlights = _optional("clip_metrics"), _optional("frame_highlights")
+        metrics = clip_metrics(people, fps=FPS) if clip_metrics else {}
+        highlights = frame_highlights(people) if frame_highlights else None
+        return Motion(people=people, fps=FPS, plan=plan, metrics=metrics, highlights=highlights,
+                      prompt=req.prompt, seed=plan["seed"])
+
+
+@lru_cache(maxsize=2)
+def _load(data_dir: str) -> Generator:
+    from ..text.encoder import get_encoder
+
+    return Generator(RetrievalIndex(default_clips(data_dir), get_encoder()))
+
+
+def load_generator(data_dir=None) -> Generator:
+    """The generator over the processed data set (models/data by default), built once."""
+    return _load(str(data_dir or DATA_DIR))
