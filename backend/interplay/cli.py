@@ -1,10 +1,188 @@
-"""The `interplay` command."""
+"""The `interplay` command: serve, generate, metrics, export, bench, data build.
+
+Bad files or arguments exit with code 2 and a one-line message on stderr."""
 
 from __future__ import annotations
 
+import argparse
+import json
 import sys
+from pathlib import Path
+
+
+class CliError(Exception):
+    """A user error: printed as `interplay: error: …`, exit code 2."""
+
+
+def _read_motion(path: str):
+    from .motion.motion import Motion
+    p = Path(path)
+    if not p.is_file():
+        raise CliError(f"{path}: no such file")
+    try:
+        return Motion.from_json(json.loads(p.read_text()))
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise CliError(f"{path}: not valid JSON ({exc})") from None
+    except ValueError as exc:
+        raise CliError(f"{path}: not a motion file: {exc}") from None
+
+
+def _write(path: str, text: str) -> None:
+    p = Path(path)
+    if p.is_dir():
+        raise CliError(f"{path} is a directory; give a file name")
+    if not p.parent.is_dir():
+        raise CliError(f"{p.parent}: no such directory")
+    p.write_text(text)
+
+
+def cmd_serve(args) -> int:
+    import uvicorn
+
+    from .api.app import create_app
+    from .settings import get_settings
+    settings = get_settings()
+    host, port = args.host or settings.host, args.port if args.port is not None else settings.port
+    uvicorn.run(create_app(settings.model_copy(update={"host": host, "port": port})),
+                host=host, port=port, log_level="info")
+    return 0
+
+
+def cmd_generate(args) -> int:
+    from pydantic import ValidationError
+
+    from .agents.generator import load_generator
+    from .api.app import readable_errors
+    from .api.jobs import make_request, random_seed
+    from .api.motion_json import plain
+    from .api.schemas import JobCreate
+    from .motion.metrics import clip_metrics
+    try:
+        body = JobCreate(prompt=args.prompt, persons=args.persons, seconds=args.seconds,
+                         seed=args.seed)
+    except ValidationError as exc:
+        raise CliError(readable_errors(exc.errors())) from None
+    if Path(args.out).is_dir():
+        raise CliError(f"{args.out} is a directory; give a file name")
+    seed = body.seed if body.seed is not None else random_seed()
+    motion = load_generator().generate(make_request(body.prompt, body.persons, body.seconds, seed))
+    if not motion.metrics:
+        motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
+    motion.prompt, motion.seed = motion.prompt or body.prompt, seed
+    _write(args.out, json.dumps(plain(motion.to_json()), separators=(",", ":")))
+    print(f"wrote {args.out}: {len(motion.people)} person(s), {motion.frames} frames "
+          f"({motion.seconds:g} s), seed {seed}", file=sys.stderr)
+    return 0
+
+
+def cmd_metrics(args) -> int:
+    from .api.motion_json import plain
+    from .motion.metrics import clip_metrics
+    motion = _read_motion(args.motion)
+    metrics = plain(clip_metrics([p.astype("float64") for p in motion.people]))
+    if args.json:
+        print(json.dumps(metrics, indent=1))
+    else:
+        width = max(map(len, metrics), default=0)
+        print(f"{args.motion}: {len(motion.people)} person(s), {motion.frames} frames")
+        for k, v in metrics.items():
+            print(f"  {k:<{width}}  {v:.4f}" if isinstance(v, float) else f"  {k:<{width}}  {v}")
+    return 0
+
+
+def cmd_export(args) -> int:
+    motion = _read_motion(args.motion)
+    if args.format == "json":
+        from .api.motion_json import plain
+        text = json.dumps(plain(motion.to_json()), separators=(",", ":"))
+    else:
+        if not 0 <= args.person < len(motion.people):
+            raise CliError(f"--person {args.person}: the motion has {len(motion.people)} "
+                           f"person(s), numbered from 0")
+        from .motion.bvh import write_bvh
+        text = write_bvh(motion.people[args.person].astype("float64"), fps=motion.fps)
+    _write(args.out, text)
+    print(f"wrote {args.out}", file=sys.stderr)
+    return 0
+
+
+def cmd_bench(args) -> int:
+    from .bench import format_table, run_bench
+    if args.runs < 1:
+        raise CliError("--runs must be at least 1")
+    report = run_bench(runs=args.runs, seconds=args.seconds, warmup=args.warmup)
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
+def cmd_data(args) -> int:
+    if args.action != "build":
+        raise CliError(f"unknown data action {args.action!r}; expected 'build'")
+    from .data.build import main as build_main
+    return int(build_main(args.rest) or 0)
+
+
+def _seconds(text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds") from None
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="interplay", description="Text to 3D human motion for one "
+                                 "or two people, on CPU.")
+    sub = ap.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    p = sub.add_parser("serve", help="run the studio (API + front end)")
+    p.add_argument("--host", help="listen address (default INTERPLAY_HOST or 127.0.0.1)")
+    p.add_argument("--port", type=int, help="port (default INTERPLAY_PORT or 8000)")
+    p.set_defaults(func=cmd_serve)
+
+    p = sub.add_parser("generate", help="generate a motion from text into a motion JSON file")
+    p.add_argument("--prompt", required=True)
+    p.add_argument("--persons", type=int, choices=(1, 2), default=1)
+    p.add_argument("--seconds", type=_seconds, default=6.0, help="1–20 (default 6)")
+    p.add_argument("--seed", type=int)
+    p.add_argument("--out", required=True, help="motion JSON file to write")
+    p.set_defaults(func=cmd_generate)
+
+    p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
+    p.add_argument("motion")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.set_defaults(func=cmd_metrics)
+
+    p = sub.add_parser("export", help="export a motion JSON file as BVH (one person) or JSON")
+    p.add_argument("motion")
+    p.add_argument("--format", choices=("bvh", "json"), required=True)
+    p.add_argument("--out", required=True)
+    p.add_argument("--person", type=int, default=0, help="BVH: which person (default 0)")
+    p.set_defaults(func=cmd_export)
+
+    p = sub.add_parser("bench", help="time jobs through the real HTTP API and WebSocket")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--runs", type=int, default=3, help="timed jobs per person count (default 3)")
+    p.add_argument("--seconds", type=_seconds, default=6.0, help="motion length (default 6)")
+    p.add_argument("--warmup", type=int, default=1, help="untimed jobs first (default 1)")
+    p.set_defaults(func=cmd_bench)
+
+    p = sub.add_parser("data", help="processed data set: `interplay data build [options]`")
+    p.add_argument("action", choices=("build",))
+    p.add_argument("rest", nargs=argparse.REMAINDER, help="options passed to the build")
+    p.set_defaults(func=cmd_data)
+    return ap
 
 
 def main(argv: list[str] | None = None) -> int:
-    print("interplay: commands are being built", file=sys.stderr)
-    return 2
+    args = build_parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except CliError as exc:
+        print(f"interplay: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,94 @@
+"""The FastAPI application: `create_app(settings=None, generator=None)`.
+
+The lifespan opens the database (tables created if missing), loads the generator once (or takes
+the one given, for tests) and starts the job pool. Every error is a 4xx JSON
+`{"detail": "<readable message>"}`."""
+
+from __future__ import annotations
+
+import logging
+from contextlib import asynccontextmanager
+
+import anyio
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from fastapi.responses import JSONResponse
+from starlette.exceptions import HTTPException as StarletteHTTPException
+
+from .. import __version__
+from ..settings import Settings, get_settings
+from ..store import MotionRepository, make_engine
+from . import stream
+from .jobs import JobManager
+from .routes import jobs, motions, pages
+
+log = logging.getLogger(__name__)
+
+
+def _load_generator():
+    from ..agents.generator import load_generator
+    return load_generator()
+
+
+def readable_errors(errors) -> str:
+    """Pydantic errors as one readable line, e.g. "seconds: Input should be less than or
+    equal to 20; persons: Input should be 1 or 2"."""
+    parts = []
+    for err in errors:
+        loc = [str(x) for x in err.get("loc", ()) if x not in ("body", "query", "path")]
+        msg = str(err.get("msg", "invalid value")).removeprefix("Value error, ")
+        if err.get("type") == "json_invalid":
+            loc, msg = [], f"request body is not valid JSON ({err.get('ctx', {}).get('error', 'parse error')})"
+        elif err.get("type") == "missing" and not loc:
+            msg = "a JSON request body is required"
+        elif err.get("type") == "model_attributes_type":
+            msg = "request body must be a JSON object"
+        parts.append(f"{'.'.join(loc)}: {msg}" if loc else msg)
+    return "; ".join(parts) or "invalid request"
+
+
+def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
+    settings = settings or get_settings()
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI):
+        engine = make_engine(settings.db_url)
+        app.state.repo = MotionRepository(engine)
+        app.state.generator, app.state.generator_error = generator, None
+        if generator is None:
+            try:  # ONNX sessions take a moment to build: off the event loop
+                app.state.generator = await anyio.to_thread.run_sync(_load_generator)
+            except Exception as exc:  # serve stored motions anyway; POST /api/jobs answers 503
+                log.exception("could not load the generator")
+                app.state.generator_error = f"{type(exc).__name__}: {exc}"
+        app.state.jobs = JobManager(app.state.repo, workers=settings.job_workers,
+                                    max_pending=settings.max_pending_jobs,
+                                    retention_s=settings.job_retention_s)
+        try:
+            yield
+        finally:
+            app.state.jobs.shutdown()
+            engine.dispose()
+
+    app = FastAPI(title="Interplay", version=__version__, lifespan=lifespan,
+                  description="Text to 3D human motion for one or two people. "
+                              "See docs/api.md for the job event stream.")
+    app.state.settings = settings
+
+    @app.exception_handler(RequestValidationError)
+    async def _validation(_req: Request, exc: RequestValidationError):
+        return JSONResponse({"detail": readable_errors(exc.errors())}, status_code=422)
+
+    @app.exception_handler(StarletteHTTPException)
+    async def _http(_req: Request, exc: StarletteHTTPException):
+        detail = exc.detail if isinstance(exc.detail, str) else str(exc.detail)
+        if exc.status_code == 404 and detail == "Not Found":
+            detail = "not found"
+        return JSONResponse({"detail": detail}, status_code=exc.status_code,
+                            headers=getattr(exc, "headers", None))
+
+    app.include_router(jobs.router)
+    app.include_router(stream.router)
+    app.include_router(motions.router)
+    app.include_router(pages.router)  # last: it has a catch-all for top-level files
+    return app

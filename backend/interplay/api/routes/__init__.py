@@ -1,0 +1,1 @@
+"""HTTP routes (thin: validation in schemas, work in jobs/store)."""

@@ -1,0 +1,61 @@
+"""Stored motions: GET /api/motions/{id}, its export (BVH per person or Motion JSON), and the
+skeleton description the viewer draws with."""
+
+from __future__ import annotations
+
+import json
+from typing import Annotated, Literal
+
+from fastapi import APIRouter, HTTPException, Query, Response
+
+from ...motion import skeleton as sk
+from ...store import StoredMotion
+from ..deps import RepoDep
+from ..motion_json import motion_file, motion_payload
+from ..schemas import ERRORS, MotionOut, SkeletonOut
+
+router = APIRouter(prefix="/api", tags=["motions"])
+
+
+def _load(repo, motion_id: str) -> StoredMotion:
+    motion = repo.get(motion_id)
+    if motion is None:
+        raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
+    return motion
+
+
+@router.get("/motions/{motion_id}", response_model=MotionOut, responses=ERRORS)
+def get_motion(motion_id: str, repo: RepoDep) -> dict:
+    return motion_payload(_load(repo, motion_id))
+
+
+@router.get("/motions/{motion_id}/export", responses={
+    **ERRORS, 200: {"content": {"text/plain": {}, "application/json": {}},
+                    "description": "A BVH file (one person) or the Motion JSON, as a download."}})
+def export_motion(motion_id: str, repo: RepoDep,
+                  format: Annotated[Literal["bvh", "json"], Query(description="bvh or json")] = "json",
+                  person: Annotated[int, Query(ge=0, le=1, description="BVH: which person")] = 0,
+                  ) -> Response:
+    motion = _load(repo, motion_id)
+    if format == "json":
+        body = json.dumps(motion_file(motion), separators=(",", ":"))
+        return Response(body, media_type="application/json", headers={
+            "Content-Disposition": f'attachment; filename="interplay-{motion.id}.json"'})
+    if person >= motion.persons:
+        raise HTTPException(422, f"person {person} does not exist: this motion has "
+                                 f"{motion.persons} person(s), numbered from 0")
+    from ...motion.bvh import write_bvh
+    text = write_bvh(motion.people[person].astype("float64"), fps=motion.fps)
+    return Response(text, media_type="text/plain; charset=utf-8", headers={
+        "Content-Disposition": f'attachment; filename="interplay-{motion.id}-person{person}.bvh"'})
+
+
+@router.get("/skeleton", response_model=SkeletonOut)
+def skeleton() -> SkeletonOut:
+    """Joint names and parents, the four CoMA body parts (joint indices), each joint's colour
+    part, the part colours, and the rest pose."""
+    return SkeletonOut(
+        joints=list(sk.JOINT_NAMES), parents=list(sk.PARENTS),
+        parts={p: [int(j) for j in idx] for p, idx in sk.PART_JOINTS.items()},
+        joint_part=list(sk.JOINT_PART), colours=dict(sk.PART_COLOURS),
+        rest=sk.rest_joints().round(4).tolist(), fps=sk.FPS)

@@ -1,0 +1,51 @@
+"""Runtime settings, read once from the environment (prefix INTERPLAY_; DATABASE_URL as is).
+
+    INTERPLAY_VAR_DIR        where the database and other run-time files live (default <repo>/var)
+    DATABASE_URL             SQLAlchemy URL; PostgreSQL when it says so (install the [postgres] extra),
+                             default sqlite:///<var>/interplay.db
+    INTERPLAY_HOST / _PORT   where `interplay serve` listens (127.0.0.1:8000)
+    INTERPLAY_FRONTEND_DIST  the built front end served at / (default <repo>/frontend/dist)
+    INTERPLAY_JOB_WORKERS    generation threads (CPU bound: 1 on a small machine)
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from pydantic import AliasChoices, Field
+from pydantic_settings import BaseSettings, SettingsConfigDict
+
+REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+class Settings(BaseSettings):
+    model_config = SettingsConfigDict(env_prefix="INTERPLAY_", extra="ignore")
+
+    var_dir: Path = REPO_ROOT / "var"
+    database_url: str | None = Field(
+        default=None, validation_alias=AliasChoices("DATABASE_URL", "INTERPLAY_DATABASE_URL"))
+    host: str = "127.0.0.1"
+    port: int = Field(default=8000, ge=0, le=65535)
+    frontend_dist: Path = REPO_ROOT / "frontend" / "dist"
+    job_workers: int = Field(default=1, ge=1, le=16)
+    max_pending_jobs: int = Field(default=16, ge=1)   # beyond this POST /api/jobs answers 429
+    job_retention_s: float = 900.0                    # finished jobs stay streamable this long
+
+    @property
+    def db_url(self) -> str:
+        """The SQLAlchemy URL to connect to: DATABASE_URL, normalised for psycopg 3, or the
+        SQLite file in the var dir."""
+        url = self.database_url
+        if not url:
+            return f"sqlite:///{self.var_dir / 'interplay.db'}"
+        # Heroku-style URLs say postgres://; SQLAlchemy wants a dialect (psycopg 3 driver).
+        for prefix in ("postgres://", "postgresql://"):
+            if url.startswith(prefix):
+                return "postgresql+psycopg://" + url[len(prefix):]
+        return url
+
+
+@lru_cache(maxsize=1)
+def get_settings() -> Settings:
+    return Settings()

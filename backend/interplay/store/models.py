@@ -1,0 +1,47 @@
+"""SQLAlchemy 2.0 tables. One row per generated motion; joints stored compactly as float32
+bytes of shape (persons, frames, 22, 3), C order."""
+
+from __future__ import annotations
+
+import secrets
+from datetime import datetime, timezone
+
+from sqlalchemy import JSON, DateTime, Float, ForeignKey, Integer, LargeBinary, String, Text
+from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
+
+# secrets.token_urlsafe(16): 16 random bytes = 128 bits, 22 URL-safe characters.
+ID_BYTES = 16
+ID_PATTERN = r"^[A-Za-z0-9_-]{22,64}$"
+
+
+def new_id() -> str:
+    """An unguessable, URL-safe id (128 bits of entropy)."""
+    return secrets.token_urlsafe(ID_BYTES)
+
+
+def _now() -> datetime:
+    return datetime.now(timezone.utc)
+
+
+class Base(DeclarativeBase):
+    pass
+
+
+class MotionRow(Base):
+    __tablename__ = "motions"
+
+    id: Mapped[str] = mapped_column(String(64), primary_key=True, default=new_id)
+    prompt: Mapped[str] = mapped_column(Text)
+    persons: Mapped[int] = mapped_column(Integer)
+    seconds: Mapped[float] = mapped_column(Float)
+    seed: Mapped[int | None] = mapped_column(Integer, nullable=True)
+    fps: Mapped[int] = mapped_column(Integer, default=20)
+    frames: Mapped[int] = mapped_column(Integer)
+    joints: Mapped[bytes] = mapped_column(LargeBinary)       # float32 (persons, frames, 22, 3)
+    plan: Mapped[dict | None] = mapped_column(JSON, nullable=True)
+    metrics: Mapped[dict | None] = mapped_column(JSON, nullable=True)
+    highlights: Mapped[dict | None] = mapped_column(JSON, nullable=True)
+    # A later version of a motion (an edit) points at the motion it came from.
+    parent_id: Mapped[str | None] = mapped_column(
+        String(64), ForeignKey("motions.id", ondelete="SET NULL"), nullable=True, index=True)
+    created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=_now, index=True)

@@ -1,0 +1,132 @@
+"""Create, get and list stored motions. Rows become plain `StoredMotion` values (numpy joints),
+so callers never hold a session or a detached ORM object."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from datetime import datetime, timezone
+
+import numpy as np
+from sqlalchemy import Engine, func, select
+from sqlalchemy.orm import Session, load_only
+
+from ..motion.skeleton import FPS, NUM_JOINTS
+from .models import ID_PATTERN, MotionRow, new_id
+
+_ID_RE = re.compile(ID_PATTERN)
+
+
+def valid_id(value: str) -> bool:
+    """Whether `value` has the shape of an id this store hands out (cheap check before a query)."""
+    return bool(_ID_RE.match(value))
+
+
+@dataclass(frozen=True)
+class StoredMotion:
+    id: str
+    prompt: str
+    persons: int
+    seconds: float
+    seed: int | None
+    people: list[np.ndarray]          # one float32 (T, 22, 3) array per person
+    plan: dict | None = None
+    metrics: dict | None = None
+    highlights: dict | None = None
+    parent_id: str | None = None
+    created_at: datetime | None = None
+    fps: int = FPS
+
+    @property
+    def frames(self) -> int:
+        return int(self.people[0].shape[0])
+
+
+@dataclass(frozen=True)
+class MotionSummary:
+    id: str
+    prompt: str
+    persons: int
+    seconds: float
+    frames: int
+    parent_id: str | None
+    created_at: datetime
+    metrics: dict | None = field(default=None)
+
+
+def _pack(people: list[np.ndarray]) -> tuple[bytes, int]:
+    if not people:
+        raise ValueError("a motion needs at least one person")
+    arrays = [np.asarray(p, dtype=np.float32) for p in people]
+    shape = arrays[0].shape
+    if len(shape) != 3 or shape[1:] != (NUM_JOINTS, 3) or shape[0] < 1:
+        raise ValueError(f"joints must be (T, {NUM_JOINTS}, 3) with T >= 1, got {shape}")
+    if any(a.shape != shape for a in arrays):
+        raise ValueError(f"every person needs the same shape, got {[a.shape for a in arrays]}")
+    if not all(np.isfinite(a).all() for a in arrays):
+        raise ValueError("joints contain NaN or infinite values")
+    return np.ascontiguousarray(np.stack(arrays)).tobytes(), shape[0]
+
+
+def _unpack(blob: bytes, persons: int, frames: int) -> list[np.ndarray]:
+    arr = np.frombuffer(blob, dtype=np.float32).reshape(persons, frames, NUM_JOINTS, 3)
+    return [arr[i].copy() for i in range(persons)]
+
+
+def _aware(dt: datetime) -> datetime:
+    # SQLite drops the zone; every timestamp here is written in UTC.
+    return dt if dt.tzinfo else dt.replace(tzinfo=timezone.utc)
+
+
+class MotionRepository:
+    def __init__(self, engine: Engine):
+        self.engine = engine
+
+    def create(self, *, prompt: str, people: list[np.ndarray], seconds: float,
+               seed: int | None = None, plan: dict | None = None, metrics: dict | None = None,
+               highlights: dict | None = None, parent_id: str | None = None,
+               id: str | None = None) -> StoredMotion:
+        """Store a motion and return it as read back. `id` may be pre-allocated (a job hands
+        out the motion id before generation ends); otherwise a fresh one is drawn."""
+        blob, frames = _pack(people)
+        row = MotionRow(id=id or new_id(), prompt=prompt, persons=len(people),
+                        seconds=float(seconds), seed=seed, fps=FPS, frames=frames, joints=blob,
+                        plan=plan, metrics=metrics, highlights=highlights, parent_id=parent_id)
+        with Session(self.engine, expire_on_commit=False) as session:
+            session.add(row)
+            session.commit()
+            return self._to_motion(row)
+
+    def get(self, motion_id: str) -> StoredMotion | None:
+        if not valid_id(motion_id):
+            return None
+        with Session(self.engine) as session:
+            row = session.get(MotionRow, motion_id)
+            return self._to_motion(row) if row is not None else None
+
+    def exists(self, motion_id: str) -> bool:
+        if not valid_id(motion_id):
+            return False
+        with Session(self.engine) as session:
+            return session.scalar(select(func.count()).where(MotionRow.id == motion_id)) > 0
+
+    def list(self, limit: int = 50, offset: int = 0) -> list[MotionSummary]:
+        """Newest first, without the joints."""
+        cols = (MotionRow.id, MotionRow.prompt, MotionRow.persons, MotionRow.seconds,
+                MotionRow.frames, MotionRow.parent_id, MotionRow.created_at, MotionRow.metrics)
+        stmt = (select(MotionRow).options(load_only(*cols))
+                .order_by(MotionRow.created_at.desc(), MotionRow.id).limit(limit).offset(offset))
+        with Session(self.engine) as session:
+            return [MotionSummary(id=r.id, prompt=r.prompt, persons=r.persons, seconds=r.seconds,
+                                  frames=r.frames, parent_id=r.parent_id,
+                                  created_at=_aware(r.created_at), metrics=r.metrics)
+                    for r in session.scalars(stmt)]
+
+    @staticmethod
+    def _to_motion(row: MotionRow) -> StoredMotion:
+        return StoredMotion(id=row.id, prompt=row.prompt, persons=row.persons,
+                            seconds=row.seconds, seed=row.seed,
+                            people=_unpack(row.joints, row.persons, row.frames), plan=row.plan,
+                            metrics=row.metrics, highlights=row.highlights,
+                            parent_id=row.parent_id, created_at=_aware(row.created_at),
+                            fps=row.fps)

@@ -1,0 +1,145 @@
+"""Stored motions over HTTP: GET, export (BVH per person, Motion JSON), skeleton, the pages
+(/, /m/{id}, /assets), share-id shape and entropy, and persistence across a restart."""
+
+from __future__ import annotations
+
+import base64
+import re
+
+import numpy as np
+import pytest
+from conftest import FakeGenerator, run_job
+from fastapi.testclient import TestClient
+
+from interplay.api.app import create_app
+from interplay.motion import skeleton as sk
+from interplay.motion.motion import Motion
+
+MISSING = "AAAAAAAAAAAAAAAAAAAAAA"            # well-formed, never handed out
+MALFORMED = ["x", "not-an-id!", "%2E%2E%2Fetc", "a" * 300]
+
+
+@pytest.fixture
+def two_person(fake_client):
+    job, events = run_job(fake_client, prompt="two people shake hands", persons=2, seconds=2,
+                          seed=11)
+    assert events[-1]["type"] == "done"
+    return job["motion_id"]
+
+
+@pytest.mark.parametrize("motion_id", [MISSING, *MALFORMED])
+def test_unknown_or_malformed_ids_are_404_json(fake_client, motion_id):
+    for url in (f"/api/motions/{motion_id}", f"/api/motions/{motion_id}/export?format=bvh",
+                f"/m/{motion_id}"):
+        r = fake_client.get(url)
+        assert r.status_code == 404, (url, r.text)
+        assert "no motion" in r.json()["detail"] or r.json()["detail"] == "not found"
+
+
+def test_json_export_round_trips_through_motion(fake_client, two_person):
+    r = fake_client.get(f"/api/motions/{two_person}/export?format=json")
+    assert r.status_code == 200
+    assert f'filename="interplay-{two_person}.json"' in r.headers["content-disposition"]
+    motion = Motion.from_json(r.json())
+    stored = fake_client.get(f"/api/motions/{two_person}").json()
+    assert motion.frames == 40 and len(motion.people) == 2 and motion.seed == 11
+    for a, b in zip(motion.people, stored["people"]):
+        assert np.array_equal(a, np.asarray(b["joints"], dtype=np.float32))
+    assert motion.metrics == stored["metrics"] and motion.plan == stored["plan"]
+
+
+@pytest.mark.parametrize("person", [0, 1])
+def test_bvh_export_is_one_person_per_file(fake_client, two_person, person):
+    r = fake_client.get(f"/api/motions/{two_person}/export", params={"format": "bvh",
+                                                                     "person": person})
+    assert r.status_code == 200, r.text
+    assert f"person{person}.bvh" in r.headers["content-disposition"]
+    assert r.text.startswith("HIERARCHY")
+    from interplay.motion.bvh import read_bvh
+    bvh = read_bvh(r.text)
+    joints = np.asarray(fake_client.get(f"/api/motions/{two_person}").json()
+                        ["people"][person]["joints"])
+    pos = bvh.positions()
+    assert pos.shape[0] == joints.shape[0]
+    idx = [bvh.names.index(n) for n in sk.JOINT_NAMES]
+    assert np.abs(pos[:, idx] - joints).max() < 2e-3
+
+
+@pytest.mark.parametrize("query,word", [
+    ("format=fbx", "format"), ("format=bvh&person=2", "person"), ("format=bvh&person=-1", "person"),
+    ("format=bvh&person=one", "person")])
+def test_bad_export_queries_are_422(fake_client, two_person, query, word):
+    r = fake_client.get(f"/api/motions/{two_person}/export?{query}")
+    assert r.status_code == 422 and word in r.json()["detail"], r.text
+
+
+def test_bvh_of_a_missing_second_person_is_422(fake_client):
+    job, _ = run_job(fake_client, prompt="a person waves", persons=1, seconds=1)
+    r = fake_client.get(f"/api/motions/{job['motion_id']}/export?format=bvh&person=1")
+    assert r.status_code == 422 and "1 person" in r.json()["detail"]
+
+
+def test_skeleton_describes_joints_parts_and_colours(fake_client):
+    s = fake_client.get("/api/skeleton").json()
+    assert s["joints"] == list(sk.JOINT_NAMES) and s["parents"] == list(sk.PARENTS)
+    assert set(s["parts"]) == set(s["colours"]) == set(sk.PART_NAMES)
+    for j, part in enumerate(s["joint_part"]):
+        assert j in s["parts"][part], (sk.JOINT_NAMES[j], part)
+    rest = np.asarray(s["rest"])
+    assert rest.shape == (22, 3) and rest[sk.HEAD, 1] > rest[sk.PELVIS, 1] > rest[sk.LEFT_FOOT, 1]
+
+
+def test_ids_are_url_safe_unguessable_and_distinct(fake_client):
+    ids = []
+    for _ in range(4):
+        job = fake_client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 1}).json()
+        ids += [job["job_id"], job["motion_id"]]
+    assert len(set(ids)) == len(ids)
+    for i in ids:
+        assert re.fullmatch(r"[A-Za-z0-9_-]{22,}", i)
+        assert len(base64.urlsafe_b64decode(i + "=" * (-len(i) % 4))) >= 16   # ≥ 128 bits
+    # 8 ids × 22 chars of random base64: a character should not dominate.
+    chars = "".join(ids)
+    assert max(chars.count(c) for c in set(chars)) < len(chars) / 8
+
+
+def test_pages_without_a_build_say_how_to_make_one(fake_client, two_person):
+    for url in ("/", f"/m/{two_person}"):
+        r = fake_client.get(url)
+        assert r.status_code == 200 and "make run" in r.text
+    assert fake_client.get("/assets/index.js").status_code == 404
+    assert fake_client.get("/docs").status_code == 200
+    assert "/api/jobs" in fake_client.get("/openapi.json").json()["paths"]
+
+
+def test_pages_serve_the_built_front_end(fake_client, settings, two_person):
+    dist = settings.frontend_dist
+    (dist / "assets").mkdir(parents=True)
+    (dist / "index.html").write_text("<!doctype html><div id=root></div>")
+    (dist / "assets" / "index-abc.js").write_text("console.log(1)")
+    (dist / "favicon.svg").write_text("<svg/>")
+    (settings.var_dir / "secret.txt").write_text("no")
+    for url in ("/", f"/m/{two_person}"):
+        r = fake_client.get(url)
+        assert r.status_code == 200 and "id=root" in r.text, url
+    r = fake_client.get("/assets/index-abc.js")
+    assert r.status_code == 200 and r.text == "console.log(1)" and "immutable" in r.headers[
+        "cache-control"]
+    assert fake_client.get("/favicon.svg").text == "<svg/>"
+    for url in ("/assets/missing.js", "/assets/..%2Findex.html", "/assets/%2E%2E/%2E%2E/var/secret.txt",
+                "/nothing-here"):
+        r = fake_client.get(url)
+        assert r.status_code == 404 and r.json()["detail"], url
+
+
+def test_a_motion_reopens_identically_after_a_restart(settings):
+    with TestClient(create_app(settings, generator=FakeGenerator())) as first:
+        job, events = run_job(first, prompt="two people dance", persons=2, seconds=1.5, seed=5)
+        before = first.get(f"/api/motions/{job['motion_id']}").json()
+        bvh_before = first.get(f"/api/motions/{job['motion_id']}/export?format=bvh&person=1").text
+    with TestClient(create_app(settings, generator=FakeGenerator())) as second:
+        after = second.get(f"/api/motions/{job['motion_id']}")
+        assert after.status_code == 200 and after.json() == before
+        assert second.get(f"/api/motions/{job['motion_id']}/export?format=bvh&person=1").text \
+            == bvh_before
+        assert second.get(f"/m/{job['motion_id']}").status_code == 200
