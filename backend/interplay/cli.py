@@ -57,6 +57,7 @@ def cmd_generate(args) -> int:
     from .api.motion_json import plain
     from .api.schemas import JobCreate
     from .motion.metrics import clip_metrics
+    from .settings import get_settings
     try:
         body = JobCreate(prompt=args.prompt, persons=args.persons, seconds=args.seconds,
                          seed=args.seed)
@@ -65,7 +66,7 @@ def cmd_generate(args) -> int:
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
-    motion = load_generator().generate(make_request(body.prompt, body.persons, body.seconds, seed))
+    motion = load_generator(get_settings().data_dir).generate(make_request(body.prompt, body.persons, body.seconds, seed))
     if not motion.metrics:
         motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
     motion.prompt, motion.seed = motion.prompt or body.prompt, seed

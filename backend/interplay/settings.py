@@ -6,6 +6,7 @@
     INTERPLAY_HOST / _PORT   where `interplay serve` listens (127.0.0.1:8000)
     INTERPLAY_FRONTEND_DIST  the built front end served at / (default <repo>/frontend/dist)
     INTERPLAY_JOB_WORKERS    generation threads (CPU bound: 1 on a small machine)
+    INTERPLAY_DATA_DIR       processed motion data the generator loads (default <repo>/models/data)
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ class Settings(BaseSettings):
     host: str = "127.0.0.1"
     port: int = Field(default=8000, ge=0, le=65535)
     frontend_dist: Path = REPO_ROOT / "frontend" / "dist"
+    data_dir: Path | None = None                      # None: the generator's default
     job_workers: int = Field(default=1, ge=1, le=16)
     max_pending_jobs: int = Field(default=16, ge=1)   # beyond this POST /api/jobs answers 429
     job_retention_s: float = 900.0                    # finished jobs stay streamable this long

@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-import _stubs  # noqa: F401  TEMPORARY
 from interplay.agents.planner_basic import basic_plan
 from interplay.api.app import create_app
 from interplay.motion.skeleton import FPS, rest_joints
@@ -56,7 +55,8 @@ def fake_client(settings):
 @pytest.fixture(scope="session")
 def real_generator():
     from interplay.agents.generator import load_generator
-    return load_generator()
+    from interplay.settings import get_settings
+    return load_generator(get_settings().data_dir)   # models/data unless INTERPLAY_DATA_DIR
 
 
 @pytest.fixture

@@ -74,17 +74,29 @@ def _check_stream(job: dict, events: list[dict], persons: int, frames: int) -> l
     return list(streamed)
 
 
-@pytest.mark.parametrize("persons", [1, 2])
-def test_job_streams_plan_frames_metrics_done_and_stores_what_it_streamed(fake_client, persons):
-    job, events = run_job(fake_client, prompt="a person walks, then waves", persons=persons,
-                          seconds=2.5, seed=3)
-    streamed = _check_stream(job, events, persons, frames=50)
+CONTRACT_METRICS = {"bone_deviation", "foot_skating", "ground_penetration", "floating",
+                    "com_distance", "com_angle"}
+PAIR_METRICS = {"intersection_volume", "intersection_frequency", "contact_frames", "min_distance"}
+
+
+@pytest.mark.parametrize("persons,prompt", [(1, "a person walks forward, then jumps"),
+                                            (2, "two people dance salsa")])
+def test_job_streams_plan_frames_metrics_done_and_stores_what_it_streamed(real_client, persons,
+                                                                          prompt):
+    job, events = run_job(real_client, prompt=prompt, persons=persons, seconds=6, seed=3)
+    streamed = _check_stream(job, events, persons, frames=120)
     assert job["seed"] == 3 and job["stream"] == f"/api/jobs/{job['job_id']}/stream"
-    r = fake_client.get(f"/api/motions/{job['motion_id']}")
+    assert len(events[0]["plan"]["segments"]) == (2 if persons == 1 else 1)
+    assert len([e for e in events if e["type"] == "frames"]) >= 3   # streamed in chunks
+    metrics = events[-2]["metrics"]
+    assert CONTRACT_METRICS <= set(metrics) and (PAIR_METRICS <= set(metrics)) == (persons == 2)
+    # Real captures: people stand on the floor at human height.
+    for s in streamed:
+        assert 0.6 < np.median(s[:, 0, 1]) < 1.2 and abs(s[..., 1].min()) < 0.1
+    r = real_client.get(f"/api/motions/{job['motion_id']}")
     assert r.status_code == 200, r.text
     m = r.json()
-    assert (m["prompt"], m["persons"], m["seconds"], m["seed"]) == ("a person walks, then waves",
-                                                                    persons, 2.5, 3)
+    assert (m["prompt"], m["persons"], m["seconds"], m["seed"]) == (prompt, persons, 6.0, 3)
     assert m["fps"] == 20 and m["skeleton"] == "smpl22"
     for p, s in zip(m["people"], streamed):
         assert np.array_equal(np.asarray(p["joints"]), s)   # same rounding both ways: exact
@@ -92,14 +104,14 @@ def test_job_streams_plan_frames_metrics_done_and_stores_what_it_streamed(fake_c
     hl = [e for e in events if e["type"] == "highlights"]
     assert m["highlights"]["contacts"] == [c for e in hl for c in e["contacts"]]
     assert m["highlights"]["penetration"] == [c for e in hl for c in e["penetration"]]
-    status = fake_client.get(f"/api/jobs/{job['job_id']}").json()
+    status = real_client.get(f"/api/jobs/{job['job_id']}").json()
     assert status["status"] == "done" and status["events"] == len(events)
 
 
-def test_omitted_seed_is_drawn_and_stored(fake_client):
-    job, events = run_job(fake_client, prompt="a person jumps", seconds=1)
-    assert events[-1]["type"] == "done"
-    assert fake_client.get(f"/api/motions/{job['motion_id']}").json()["seed"] == job["seed"]
+def test_omitted_seed_is_drawn_and_stored(real_client):
+    job, events = run_job(real_client, prompt="a person jumps", seconds=1)
+    assert events[-1]["type"] == "done" and events[0]["plan"]["seed"] == job["seed"]
+    assert real_client.get(f"/api/motions/{job['motion_id']}").json()["seed"] == job["seed"]
 
 
 def _wait_finished(client, job_id: str, timeout: float = 30.0) -> str:
@@ -112,12 +124,12 @@ def _wait_finished(client, job_id: str, timeout: float = 30.0) -> str:
     raise AssertionError("job did not finish")
 
 
-def test_late_and_repeated_listeners_replay_every_event(fake_client):
-    job = fake_client.post("/api/jobs", json={"prompt": "a person runs", "seconds": 2}).json()
-    assert _wait_finished(fake_client, job["job_id"]) == "done"
+def test_late_and_repeated_listeners_replay_every_event(real_client):
+    job = real_client.post("/api/jobs", json={"prompt": "a person runs", "seconds": 2}).json()
+    assert _wait_finished(real_client, job["job_id"]) == "done"
     replays = []
     for _ in range(2):
-        with fake_client.websocket_connect(job["stream"]) as ws:
+        with real_client.websocket_connect(job["stream"]) as ws:
             events = [ws.receive_json()]
             while events[-1]["type"] != "done":
                 events.append(ws.receive_json())
@@ -177,7 +189,7 @@ def test_full_queue_answers_429_and_the_loop_stays_free(settings):
 
 
 def test_generator_that_cannot_load_gives_503_not_500(settings, monkeypatch):
-    def broken():
+    def broken(_settings):
         raise FileNotFoundError("weights missing")
     monkeypatch.setattr(app_module, "_load_generator", broken)
     with TestClient(create_app(settings)) as client:

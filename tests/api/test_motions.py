@@ -8,7 +8,7 @@ import re
 
 import numpy as np
 import pytest
-from conftest import FakeGenerator, run_job
+from conftest import FakeGenerator, run_job  # noqa: F401
 from fastapi.testclient import TestClient
 
 from interplay.api.app import create_app
@@ -20,28 +20,33 @@ MALFORMED = ["x", "not-an-id!", "%2E%2E%2Fetc", "a" * 300]
 
 
 @pytest.fixture
-def two_person(fake_client):
-    job, events = run_job(fake_client, prompt="two people shake hands", persons=2, seconds=2,
+def client(real_client):
+    return real_client
+
+
+@pytest.fixture
+def two_person(client):
+    job, events = run_job(client, prompt="two people dance salsa", persons=2, seconds=2,
                           seed=11)
     assert events[-1]["type"] == "done"
     return job["motion_id"]
 
 
 @pytest.mark.parametrize("motion_id", [MISSING, *MALFORMED])
-def test_unknown_or_malformed_ids_are_404_json(fake_client, motion_id):
+def test_unknown_or_malformed_ids_are_404_json(client, motion_id):
     for url in (f"/api/motions/{motion_id}", f"/api/motions/{motion_id}/export?format=bvh",
                 f"/m/{motion_id}"):
-        r = fake_client.get(url)
+        r = client.get(url)
         assert r.status_code == 404, (url, r.text)
         assert "no motion" in r.json()["detail"] or r.json()["detail"] == "not found"
 
 
-def test_json_export_round_trips_through_motion(fake_client, two_person):
-    r = fake_client.get(f"/api/motions/{two_person}/export?format=json")
+def test_json_export_round_trips_through_motion(client, two_person):
+    r = client.get(f"/api/motions/{two_person}/export?format=json")
     assert r.status_code == 200
     assert f'filename="interplay-{two_person}.json"' in r.headers["content-disposition"]
     motion = Motion.from_json(r.json())
-    stored = fake_client.get(f"/api/motions/{two_person}").json()
+    stored = client.get(f"/api/motions/{two_person}").json()
     assert motion.frames == 40 and len(motion.people) == 2 and motion.seed == 11
     for a, b in zip(motion.people, stored["people"]):
         assert np.array_equal(a, np.asarray(b["joints"], dtype=np.float32))
@@ -49,15 +54,15 @@ def test_json_export_round_trips_through_motion(fake_client, two_person):
 
 
 @pytest.mark.parametrize("person", [0, 1])
-def test_bvh_export_is_one_person_per_file(fake_client, two_person, person):
-    r = fake_client.get(f"/api/motions/{two_person}/export", params={"format": "bvh",
+def test_bvh_export_is_one_person_per_file(client, two_person, person):
+    r = client.get(f"/api/motions/{two_person}/export", params={"format": "bvh",
                                                                      "person": person})
     assert r.status_code == 200, r.text
     assert f"person{person}.bvh" in r.headers["content-disposition"]
     assert r.text.startswith("HIERARCHY")
     from interplay.motion.bvh import read_bvh
     bvh = read_bvh(r.text)
-    joints = np.asarray(fake_client.get(f"/api/motions/{two_person}").json()
+    joints = np.asarray(client.get(f"/api/motions/{two_person}").json()
                         ["people"][person]["joints"])
     pos = bvh.positions()
     assert pos.shape[0] == joints.shape[0]
@@ -68,19 +73,19 @@ def test_bvh_export_is_one_person_per_file(fake_client, two_person, person):
 @pytest.mark.parametrize("query,word", [
     ("format=fbx", "format"), ("format=bvh&person=2", "person"), ("format=bvh&person=-1", "person"),
     ("format=bvh&person=one", "person")])
-def test_bad_export_queries_are_422(fake_client, two_person, query, word):
-    r = fake_client.get(f"/api/motions/{two_person}/export?{query}")
+def test_bad_export_queries_are_422(client, two_person, query, word):
+    r = client.get(f"/api/motions/{two_person}/export?{query}")
     assert r.status_code == 422 and word in r.json()["detail"], r.text
 
 
-def test_bvh_of_a_missing_second_person_is_422(fake_client):
-    job, _ = run_job(fake_client, prompt="a person waves", persons=1, seconds=1)
-    r = fake_client.get(f"/api/motions/{job['motion_id']}/export?format=bvh&person=1")
+def test_bvh_of_a_missing_second_person_is_422(client):
+    job, _ = run_job(client, prompt="a person waves", persons=1, seconds=1)
+    r = client.get(f"/api/motions/{job['motion_id']}/export?format=bvh&person=1")
     assert r.status_code == 422 and "1 person" in r.json()["detail"]
 
 
-def test_skeleton_describes_joints_parts_and_colours(fake_client):
-    s = fake_client.get("/api/skeleton").json()
+def test_skeleton_describes_joints_parts_and_colours(client):
+    s = client.get("/api/skeleton").json()
     assert s["joints"] == list(sk.JOINT_NAMES) and s["parents"] == list(sk.PARENTS)
     assert set(s["parts"]) == set(s["colours"]) == set(sk.PART_NAMES)
     for j, part in enumerate(s["joint_part"]):
@@ -89,10 +94,10 @@ def test_skeleton_describes_joints_parts_and_colours(fake_client):
     assert rest.shape == (22, 3) and rest[sk.HEAD, 1] > rest[sk.PELVIS, 1] > rest[sk.LEFT_FOOT, 1]
 
 
-def test_ids_are_url_safe_unguessable_and_distinct(fake_client):
+def test_ids_are_url_safe_unguessable_and_distinct(client):
     ids = []
     for _ in range(4):
-        job = fake_client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 1}).json()
+        job = client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 1}).json()
         ids += [job["job_id"], job["motion_id"]]
     assert len(set(ids)) == len(ids)
     for i in ids:
@@ -103,16 +108,16 @@ def test_ids_are_url_safe_unguessable_and_distinct(fake_client):
     assert max(chars.count(c) for c in set(chars)) < len(chars) / 8
 
 
-def test_pages_without_a_build_say_how_to_make_one(fake_client, two_person):
+def test_pages_without_a_build_say_how_to_make_one(client, two_person):
     for url in ("/", f"/m/{two_person}"):
-        r = fake_client.get(url)
+        r = client.get(url)
         assert r.status_code == 200 and "make run" in r.text
-    assert fake_client.get("/assets/index.js").status_code == 404
-    assert fake_client.get("/docs").status_code == 200
-    assert "/api/jobs" in fake_client.get("/openapi.json").json()["paths"]
+    assert client.get("/assets/index.js").status_code == 404
+    assert client.get("/docs").status_code == 200
+    assert "/api/jobs" in client.get("/openapi.json").json()["paths"]
 
 
-def test_pages_serve_the_built_front_end(fake_client, settings, two_person):
+def test_pages_serve_the_built_front_end(client, settings, two_person):
     dist = settings.frontend_dist
     (dist / "assets").mkdir(parents=True)
     (dist / "index.html").write_text("<!doctype html><div id=root></div>")
@@ -120,20 +125,20 @@ def test_pages_serve_the_built_front_end(fake_client, settings, two_person):
     (dist / "favicon.svg").write_text("<svg/>")
     (settings.var_dir / "secret.txt").write_text("no")
     for url in ("/", f"/m/{two_person}"):
-        r = fake_client.get(url)
+        r = client.get(url)
         assert r.status_code == 200 and "id=root" in r.text, url
-    r = fake_client.get("/assets/index-abc.js")
+    r = client.get("/assets/index-abc.js")
     assert r.status_code == 200 and r.text == "console.log(1)" and "immutable" in r.headers[
         "cache-control"]
-    assert fake_client.get("/favicon.svg").text == "<svg/>"
+    assert client.get("/favicon.svg").text == "<svg/>"
     for url in ("/assets/missing.js", "/assets/..%2Findex.html", "/assets/%2E%2E/%2E%2E/var/secret.txt",
                 "/nothing-here"):
-        r = fake_client.get(url)
+        r = client.get(url)
         assert r.status_code == 404 and r.json()["detail"], url
 
 
-def test_a_motion_reopens_identically_after_a_restart(settings):
-    with TestClient(create_app(settings, generator=FakeGenerator())) as first:
+def test_a_motion_reopens_identically_after_a_restart(settings, real_generator):
+    with TestClient(create_app(settings, generator=real_generator)) as first:
         job, events = run_job(first, prompt="two people dance", persons=2, seconds=1.5, seed=5)
         before = first.get(f"/api/motions/{job['motion_id']}").json()
         bvh_before = first.get(f"/api/motions/{job['motion_id']}/export?format=bvh&person=1").text

@@ -25,9 +25,9 @@ from .routes import jobs, motions, pages
 log = logging.getLogger(__name__)
 
 
-def _load_generator():
+def _load_generator(settings: Settings):
     from ..agents.generator import load_generator
-    return load_generator()
+    return load_generator(settings.data_dir)
 
 
 def readable_errors(errors) -> str:
@@ -57,7 +57,7 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
         app.state.generator, app.state.generator_error = generator, None
         if generator is None:
             try:  # ONNX sessions take a moment to build: off the event loop
-                app.state.generator = await anyio.to_thread.run_sync(_load_generator)
+                app.state.generator = await anyio.to_thread.run_sync(_load_generator, settings)
             except Exception as exc:  # serve stored motions anyway; POST /api/jobs answers 503
                 log.exception("could not load the generator")
                 app.state.generator_error = f"{type(exc).__name__}: {exc}"
