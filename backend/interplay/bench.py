@@ -34,7 +34,8 @@ def running_server(settings: Settings, generator=None):
     sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     sock.bind(("127.0.0.1", 0))
     port = sock.getsockname()[1]
-    config = uvicorn.Config(create_app(settings, generator=generator), log_level="warning", lifespan="on")
+    config = uvicorn.Config(create_app(settings, generator=generator), log_level="warning",
+                            lifespan="on")
     server = uvicorn.Server(config)
     thread = threading.Thread(target=server.run, kwargs={"sockets": [sock]}, daemon=True)
     thread.start()

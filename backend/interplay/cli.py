@@ -66,7 +66,8 @@ def cmd_generate(args) -> int:
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
-    motion = load_generator(get_settings().data_dir).generate(make_request(body.prompt, body.persons, body.seconds, seed))
+    generator = load_generator(get_settings().data_dir)
+    motion = generator.generate(make_request(body.prompt, body.persons, body.seconds, seed))
     if not motion.metrics:
         motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
     motion.prompt, motion.seed = motion.prompt or body.prompt, seed

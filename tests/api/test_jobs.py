@@ -196,3 +196,14 @@ def test_generator_that_cannot_load_gives_503_not_500(settings, monkeypatch):
         r = client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 2})
         assert r.status_code == 503 and "weights missing" in r.json()["detail"]
         assert client.get("/api/skeleton").status_code == 200
+
+
+def test_a_listener_leaving_early_does_not_stop_the_job(settings):
+    gen = BlockingGenerator()
+    with TestClient(create_app(settings, generator=gen)) as client:
+        job = client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 2}).json()
+        with client.websocket_connect(job["stream"]) as ws:
+            assert ws.receive_json()["type"] == "plan"
+        gen.release.set()
+        assert _wait_finished(client, job["job_id"]) == "done"
+        assert client.get(f"/api/motions/{job['motion_id']}").json()["people"][0]["joints"]

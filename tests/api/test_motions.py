@@ -8,7 +8,7 @@ import re
 
 import numpy as np
 import pytest
-from conftest import FakeGenerator, run_job  # noqa: F401
+from conftest import FakeGenerator, run_job
 from fastapi.testclient import TestClient
 
 from interplay.api.app import create_app
@@ -131,8 +131,8 @@ def test_pages_serve_the_built_front_end(client, settings, two_person):
     assert r.status_code == 200 and r.text == "console.log(1)" and "immutable" in r.headers[
         "cache-control"]
     assert client.get("/favicon.svg").text == "<svg/>"
-    for url in ("/assets/missing.js", "/assets/..%2Findex.html", "/assets/%2E%2E/%2E%2E/var/secret.txt",
-                "/nothing-here"):
+    for url in ("/assets/missing.js", "/assets/..%2Findex.html",
+                "/assets/%2E%2E/%2E%2E/var/secret.txt", "/nothing-here"):
         r = client.get(url)
         assert r.status_code == 404 and r.json()["detail"], url
 

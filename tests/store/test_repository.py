@@ -9,14 +9,15 @@ from datetime import datetime, timezone
 import numpy as np
 import pytest
 
-from interplay.motion.clip import default_clips
+from interplay.motion.clip import DATA_DIR, default_clips
+from interplay.settings import get_settings
 from interplay.store import MotionRepository, make_engine, valid_id
 
 
 @pytest.fixture(scope="module")
 def salsa():
     """A real two-person clip (CMU salsa) and a real one-person clip from the processed set."""
-    clips = default_clips()
+    clips = default_clips(str(get_settings().data_dir or DATA_DIR))
     two = next(c for c in clips if len(c.people) == 2)
     one = next(c for c in clips if len(c.people) == 1)
     return two, one

@@ -38,7 +38,8 @@ def readable_errors(errors) -> str:
         loc = [str(x) for x in err.get("loc", ()) if x not in ("body", "query", "path")]
         msg = str(err.get("msg", "invalid value")).removeprefix("Value error, ")
         if err.get("type") == "json_invalid":
-            loc, msg = [], f"request body is not valid JSON ({err.get('ctx', {}).get('error', 'parse error')})"
+            why = err.get("ctx", {}).get("error", "parse error")
+            loc, msg = [], f"request body is not valid JSON ({why})"
         elif err.get("type") == "missing" and not loc:
             msg = "a JSON request body is required"
         elif err.get("type") == "model_attributes_type":

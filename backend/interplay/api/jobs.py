@@ -24,6 +24,7 @@ from .motion_json import joints_list, plain
 
 log = logging.getLogger(__name__)
 TERMINAL = ("done", "error")
+MAX_FINISHED = 64   # finished jobs kept for replay at most
 
 
 @dataclass(frozen=True)
@@ -151,11 +152,15 @@ class JobManager:
         self._pool.shutdown(wait=False, cancel_futures=True)
 
     def _prune(self) -> None:
+        """Forget finished jobs older than the retention time, and all but the newest
+        MAX_FINISHED (their buffered frames hold memory; the motions stay in the store)."""
         now = time.monotonic()
         with self._lock:
-            for jid in [jid for jid, j in self._jobs.items()
-                        if j.finished is not None and now - j.finished > self.retention_s]:
-                del self._jobs[jid]
+            finished = sorted((j for j in self._jobs.values() if j.finished is not None),
+                              key=lambda j: j.finished, reverse=True)
+            for i, j in enumerate(finished):
+                if i >= MAX_FINISHED or now - j.finished > self.retention_s:
+                    del self._jobs[j.id]
 
     def _run(self, job: Job, generator) -> None:
         job.status = "running"

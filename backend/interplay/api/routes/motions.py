@@ -33,7 +33,8 @@ def get_motion(motion_id: str, repo: RepoDep) -> dict:
     **ERRORS, 200: {"content": {"text/plain": {}, "application/json": {}},
                     "description": "A BVH file (one person) or the Motion JSON, as a download."}})
 def export_motion(motion_id: str, repo: RepoDep,
-                  format: Annotated[Literal["bvh", "json"], Query(description="bvh or json")] = "json",
+                  format: Annotated[Literal["bvh", "json"], Query(description="bvh or json")
+                                    ] = "json",
                   person: Annotated[int, Query(ge=0, le=1, description="BVH: which person")] = 0,
                   ) -> Response:
     motion = _load(repo, motion_id)
