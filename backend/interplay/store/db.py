@@ -26,6 +26,10 @@ def make_engine(url: str) -> Engine:
             cur.execute("PRAGMA journal_mode=WAL")
             cur.close()
     else:
-        engine = create_engine(url, pool_pre_ping=True)
+        try:
+            engine = create_engine(url, pool_pre_ping=True)
+        except ImportError as exc:  # e.g. DATABASE_URL=postgresql://… without psycopg
+            raise RuntimeError(f"no driver for {parsed.drivername!r} ({exc}); for PostgreSQL "
+                               "install the extra: pip install -e '.[postgres]'") from None
     Base.metadata.create_all(engine)
     return engine
