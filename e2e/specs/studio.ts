@@ -1,0 +1,123 @@
+// Helpers for driving the studio page through its UI and reading its test hook.
+import { expect, type Locator, type Page, type TestInfo } from "@playwright/test";
+import { mkdirSync } from "node:fs";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
+
+export interface HookSnapshot {
+  motionId: string | null;
+  phase: string;
+  persons: number;
+  frameCount: number;
+  framesReceived: number;
+  fps: number;
+  firstFrame: number[][][];
+  currentFrame: number;
+  renderCount: number;
+}
+
+interface BvhSummary {
+  bones: number;
+  joints: string[];
+  endSites: number;
+  frames: number;
+  duration: number;
+}
+
+declare global {
+  interface Window {
+    __interplay: HookSnapshot & { parseBvh(text: string): Promise<BvhSummary> };
+  }
+}
+
+const SHOTS = join(dirname(fileURLToPath(import.meta.url)), "..", "test-results", "screenshots");
+
+/** Save a screenshot under e2e/test-results/screenshots/ and attach it to the report. */
+export async function shot(target: Page | Locator, name: string, info: TestInfo): Promise<Buffer> {
+  mkdirSync(SHOTS, { recursive: true });
+  const path = join(SHOTS, `${name}.png`);
+  const png = await target.screenshot({ path });
+  await info.attach(name, { path, contentType: "image/png" });
+  return png;
+}
+
+export function hook(page: Page): Promise<HookSnapshot> {
+  return page.evaluate(() => {
+    const h = window.__interplay;
+    return {
+      motionId: h.motionId,
+      phase: h.phase,
+      persons: h.persons,
+      frameCount: h.frameCount,
+      framesReceived: h.framesReceived,
+      fps: h.fps,
+      firstFrame: h.firstFrame,
+      currentFrame: h.currentFrame,
+      renderCount: h.renderCount,
+    };
+  });
+}
+
+/** Open the studio and wait until the skeleton is loaded and the empty scene has rendered. */
+export async function openStudio(page: Page, path = "/"): Promise<void> {
+  await page.goto(path);
+  await expect(page.getByTestId("legend")).toBeVisible();
+  await page.waitForFunction(() => window.__interplay.renderCount > 0);
+}
+
+/** Fill the prompt bar and press Generate. */
+export async function startGeneration(page: Page, prompt: string, persons: 1 | 2, seconds: number) {
+  await page.getByTestId("prompt").fill(prompt);
+  await page.getByTestId(`persons-${persons}`).click();
+  await page.getByTestId("seconds").fill(String(seconds));
+  await page.getByTestId("generate").click();
+}
+
+/** Wait for the stream to finish; fails with the page's error message if it did not. */
+export async function waitDone(page: Page, timeout = 150_000): Promise<HookSnapshot> {
+  await page.waitForFunction(() => ["done", "error"].includes(window.__interplay.phase), null, { timeout });
+  const h = await hook(page);
+  if (h.phase !== "done") {
+    const banner = await page.getByTestId("error-banner").textContent().catch(() => null);
+    throw new Error(`generation ended in ${h.phase}: ${banner}`);
+  }
+  return h;
+}
+
+/** Pause playback and show frame `frame` (through the scrubber, as a user would). */
+export async function showFrame(page: Page, frame: number): Promise<void> {
+  if ((await page.getByTestId("play").getAttribute("aria-label")) === "Pause") await page.getByTestId("play").click();
+  await page.getByTestId("scrubber").fill(String(frame));
+  await page.waitForFunction((f) => window.__interplay.currentFrame === f, frame);
+  await page.waitForTimeout(150); // a render tick
+}
+
+/** Fraction of pixels that differ (any channel by more than 16) between two PNGs of one size,
+ * decoded in the page. */
+export async function pixelDifference(page: Page, a: Buffer, b: Buffer): Promise<number> {
+  return page.evaluate(
+    async ([a64, b64]) => {
+      const decode = async (s: string) => {
+        const blob = await (await fetch(`data:image/png;base64,${s}`)).blob();
+        const bmp = await createImageBitmap(blob);
+        const c = new OffscreenCanvas(bmp.width, bmp.height);
+        const ctx = c.getContext("2d")!;
+        ctx.drawImage(bmp, 0, 0);
+        return ctx.getImageData(0, 0, bmp.width, bmp.height);
+      };
+      const [x, y] = [await decode(a64), await decode(b64)];
+      if (x.width !== y.width || x.height !== y.height) return 1;
+      let diff = 0;
+      for (let i = 0; i < x.data.length; i += 4) {
+        if (
+          Math.abs(x.data[i] - y.data[i]) > 16 ||
+          Math.abs(x.data[i + 1] - y.data[i + 1]) > 16 ||
+          Math.abs(x.data[i + 2] - y.data[i + 2]) > 16
+        )
+          diff++;
+      }
+      return diff / (x.width * x.height);
+    },
+    [a.toString("base64"), b.toString("base64")],
+  );
+}

@@ -1,0 +1,79 @@
+// Typed REST client for the studio API. Every non-2xx answer becomes an ApiError
+// carrying the server's readable `detail` message.
+import type { ExportFormat, JobCreated, JobRequest, Motion, Skeleton } from "./types";
+
+export class ApiError extends Error {
+  constructor(
+    readonly status: number,
+    message: string,
+  ) {
+    super(message);
+    this.name = "ApiError";
+  }
+}
+
+/** The readable message of an error body: FastAPI's `detail` is a string, or a list of
+ * validation errors ({loc, msg}) for 422s. */
+export function errorMessage(body: unknown, status: number): string {
+  const detail = (body as { detail?: unknown } | null)?.detail;
+  if (typeof detail === "string" && detail) return detail;
+  if (Array.isArray(detail) && detail.length) {
+    return detail
+      .map((d: { loc?: unknown[]; msg?: string }) => {
+        const field = Array.isArray(d.loc) ? d.loc.filter((x) => x !== "body").join(".") : "";
+        return field ? `${field}: ${d.msg ?? "invalid"}` : (d.msg ?? "invalid request");
+      })
+      .join("; ");
+  }
+  return `request failed (HTTP ${status})`;
+}
+
+async function request<T>(path: string, init?: RequestInit): Promise<T> {
+  let res: Response;
+  try {
+    res = await fetch(path, init);
+  } catch {
+    throw new ApiError(0, "cannot reach the Interplay server");
+  }
+  const text = await res.text();
+  let body: unknown = null;
+  try {
+    body = text ? JSON.parse(text) : null;
+  } catch {
+    body = null;
+  }
+  if (!res.ok) throw new ApiError(res.status, errorMessage(body, res.status));
+  return body as T;
+}
+
+export function createJob(req: JobRequest): Promise<JobCreated> {
+  return request<JobCreated>("/api/jobs", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(req),
+  });
+}
+
+export function getMotion(id: string): Promise<Motion> {
+  return request<Motion>(`/api/motions/${encodeURIComponent(id)}`);
+}
+
+export function getSkeleton(): Promise<Skeleton> {
+  return request<Skeleton>("/api/skeleton");
+}
+
+export function exportUrl(id: string, format: ExportFormat, person?: number): string {
+  const q = new URLSearchParams({ format });
+  if (format === "bvh" && person !== undefined) q.set("person", String(person));
+  return `/api/motions/${encodeURIComponent(id)}/export?${q}`;
+}
+
+export function shareUrl(id: string, origin: string = window.location.origin): string {
+  return `${origin}/m/${encodeURIComponent(id)}`;
+}
+
+/** The motion id in a `/m/{id}` path, or null. */
+export function motionIdFromPath(pathname: string): string | null {
+  const m = /^\/m\/([A-Za-z0-9_-]+)\/?$/.exec(pathname);
+  return m ? m[1] : null;
+}

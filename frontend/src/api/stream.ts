@@ -1,0 +1,107 @@
+// The generation stream: a pure reducer over the contract's events (plan → frames/highlights
+// … → metrics → done | error) and a thin WebSocket client that feeds it.
+import type { Metrics, Plan, StreamEvent } from "./types";
+
+export type StreamPhase = "idle" | "connecting" | "generating" | "done" | "error";
+
+export interface StreamState {
+  phase: StreamPhase;
+  plan: Plan | null;
+  /** Frames received so far (end of the furthest frames chunk). */
+  received: number;
+  /** Frames expected in all (0 until the first frames event says). */
+  total: number;
+  metrics: Metrics | null;
+  motionId: string | null;
+  error: string | null;
+}
+
+export const initialStream: StreamState = {
+  phase: "idle",
+  plan: null,
+  received: 0,
+  total: 0,
+  metrics: null,
+  motionId: null,
+  error: null,
+};
+
+export function startStream(motionId: string | null = null): StreamState {
+  return { ...initialStream, phase: "connecting", motionId };
+}
+
+/** Next state after one event. Events after `done` or `error` are ignored; frames and
+ * highlights data themselves go to the FrameBuffer, the reducer only counts. */
+export function reduceStream(state: StreamState, event: StreamEvent): StreamState {
+  if (state.phase === "done" || state.phase === "error") return state;
+  switch (event.type) {
+    case "plan":
+      return { ...state, phase: "generating", plan: event.plan };
+    case "frames": {
+      const n = event.people[0]?.length ?? 0;
+      return {
+        ...state,
+        phase: "generating",
+        received: Math.max(state.received, event.start + n),
+        total: Math.max(event.total, event.start + n),
+      };
+    }
+    case "highlights":
+      return state;
+    case "metrics":
+      return { ...state, metrics: event.metrics };
+    case "done":
+      return {
+        ...state,
+        phase: "done",
+        motionId: event.motion_id,
+        total: event.frames,
+        received: Math.min(state.received, event.frames),
+      };
+    case "error":
+      return { ...state, phase: "error", error: event.message || "generation failed" };
+    default:
+      return state;
+  }
+}
+
+/** Parse one message; a malformed one becomes an error event rather than a throw. */
+export function parseEvent(data: string): StreamEvent {
+  try {
+    const ev = JSON.parse(data) as StreamEvent;
+    if (ev && typeof ev === "object" && typeof ev.type === "string") return ev;
+  } catch {
+    /* fall through */
+  }
+  return { type: "error", message: "the server sent a malformed stream message" };
+}
+
+export function streamSocketUrl(path: string, loc: Location = window.location): string {
+  const scheme = loc.protocol === "https:" ? "wss:" : "ws:";
+  return `${scheme}//${loc.host}${path}`;
+}
+
+export interface StreamHandle {
+  close(): void;
+}
+
+/** Open the job's stream; every event (and a synthetic error if the socket drops before
+ * `done`) goes to onEvent. */
+export function openStream(path: string, onEvent: (ev: StreamEvent) => void): StreamHandle {
+  const ws = new WebSocket(streamSocketUrl(path));
+  let finished = false;
+  const emit = (ev: StreamEvent) => {
+    if (finished) return;
+    if (ev.type === "done" || ev.type === "error") finished = true;
+    onEvent(ev);
+  };
+  ws.onmessage = (msg) => emit(parseEvent(String(msg.data)));
+  ws.onerror = () => emit({ type: "error", message: "the generation stream failed" });
+  ws.onclose = () => emit({ type: "error", message: "the stream closed before the motion was done" });
+  return {
+    close() {
+      finished = true;
+      ws.close();
+    },
+  };
+}

@@ -1,0 +1,35 @@
+import { describe, expect, it } from "vitest";
+import { advance, formatSeconds, frameIndex, playFrom, scrubFrame } from "./timeline";
+
+const ctx = { fps: 20, speed: 1, loop: false, available: 60, total: 60 };
+
+describe("timeline", () => {
+  it("advances by wall time × fps × speed", () => {
+    expect(advance({ pos: 0, playing: true }, 0.5, ctx).pos).toBeCloseTo(10);
+    expect(advance({ pos: 0, playing: true }, 0.5, { ...ctx, speed: 2 }).pos).toBeCloseTo(20);
+    expect(advance({ pos: 7, playing: false }, 0.5, ctx)).toEqual({ pos: 7, playing: false });
+  });
+
+  it("waits at the last received frame while streaming", () => {
+    const s = advance({ pos: 18, playing: true }, 1, { ...ctx, available: 20 });
+    expect(s).toEqual({ pos: 19, playing: true });
+  });
+
+  it("stops at the end, or wraps when looping", () => {
+    expect(advance({ pos: 59, playing: true }, 0.2, ctx)).toEqual({ pos: 59, playing: false });
+    const looped = advance({ pos: 59, playing: true }, 0.2, { ...ctx, loop: true });
+    expect(looped.playing).toBe(true);
+    expect(looped.pos).toBeCloseTo(3);
+  });
+
+  it("maps positions, scrubber fractions and durations", () => {
+    expect(frameIndex(12.9, 60)).toBe(12);
+    expect(frameIndex(80, 60)).toBe(59);
+    expect(frameIndex(-1, 60)).toBe(0);
+    expect(scrubFrame(0.5, 61)).toBe(30);
+    expect(scrubFrame(2, 60)).toBe(59);
+    expect(formatSeconds(60, 20)).toBe("3.00 s");
+    expect(playFrom(59, 60, 60)).toBe(0);
+    expect(playFrom(30, 60, 60)).toBe(30);
+  });
+});

@@ -1,0 +1,55 @@
+// Timeline maths: the playback clock is a fractional frame position advanced by wall time.
+// While frames are still streaming the clock waits at the last frame received.
+
+export const SPEEDS = [0.25, 0.5, 1, 1.5, 2] as const;
+
+export interface ClockState {
+  /** Fractional frame position. */
+  pos: number;
+  playing: boolean;
+}
+
+export interface ClockContext {
+  fps: number;
+  speed: number;
+  loop: boolean;
+  /** Frames playable now (the received prefix). */
+  available: number;
+  /** Frames the motion will have in all. */
+  total: number;
+}
+
+export function advance(clock: ClockState, dt: number, ctx: ClockContext): ClockState {
+  if (ctx.available <= 0) return { pos: 0, playing: clock.playing };
+  if (!clock.playing) return { pos: Math.min(clock.pos, ctx.available - 1), playing: false };
+  const pos = clock.pos + Math.max(0, dt) * ctx.fps * ctx.speed;
+  const complete = ctx.available >= ctx.total;
+  if (!complete) return { pos: Math.min(pos, ctx.available - 1), playing: true };
+  const n = ctx.available;
+  if (pos < n) return { pos, playing: true }; // frame floor(pos) is still inside the clip
+  if (ctx.loop) return { pos: pos % n, playing: true };
+  return { pos: n - 1, playing: false };
+}
+
+/** The frame to show for a clock position. */
+export function frameIndex(pos: number, available: number): number {
+  if (available <= 0) return 0;
+  return Math.min(available - 1, Math.max(0, Math.floor(pos)));
+}
+
+/** Frame under a scrubber fraction in [0, 1] of a clip of `total` frames. */
+export function scrubFrame(fraction: number, total: number): number {
+  if (total <= 1) return 0;
+  const f = Math.min(1, Math.max(0, fraction));
+  return Math.round(f * (total - 1));
+}
+
+/** Seconds of a frame count, e.g. "2.35 s". */
+export function formatSeconds(frames: number, fps: number): string {
+  return `${(fps > 0 ? frames / fps : 0).toFixed(2)} s`;
+}
+
+/** Where a play press should start: from the top when the clip had played to its end. */
+export function playFrom(pos: number, available: number, total: number): number {
+  return available >= total && available > 0 && pos >= available - 1 ? 0 : pos;
+}

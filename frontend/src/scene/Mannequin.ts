@@ -1,0 +1,121 @@
+// A person drawn as capsules (one per bone) and spheres (one per joint), coloured by body
+// part. Per frame: contact joints glow green, bones of penetrating parts turn red.
+import * as THREE from "three";
+import type { Skeleton } from "../api/types";
+import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
+
+// Capsule radius (m) of the bone ending at a joint, by joint name.
+const BONE_RADIUS: [RegExp, number][] = [
+  [/^spine/, 0.075],
+  [/hip$/, 0.065],
+  [/knee$/, 0.06],
+  [/ankle$/, 0.045],
+  [/foot$/, 0.035],
+  [/^neck$/, 0.05],
+  [/^head$/, 0.045],
+  [/collar$/, 0.045],
+  [/shoulder$/, 0.048],
+  [/elbow$/, 0.042],
+  [/wrist$/, 0.034],
+];
+const HEAD_RADIUS = 0.1;
+const UP = new THREE.Vector3(0, 1, 0);
+
+function boneRadius(name: string): number {
+  return BONE_RADIUS.find(([re]) => re.test(name))?.[1] ?? 0.04;
+}
+
+function material(colour: string): THREE.MeshStandardMaterial {
+  return new THREE.MeshStandardMaterial({ color: colour, roughness: 0.55, metalness: 0.05 });
+}
+
+interface Part {
+  mesh: THREE.Mesh;
+  mat: THREE.MeshStandardMaterial;
+  colour: THREE.Color;
+}
+
+export class Mannequin {
+  readonly group = new THREE.Group();
+  private readonly bonePairs: [number, number][];
+  private readonly boneParts: Part[] = [];
+  private readonly lengths: number[] = [];
+  private readonly jointParts: Part[] = [];
+  private readonly a = new THREE.Vector3();
+  private readonly b = new THREE.Vector3();
+
+  /** `rest`: the first frame (66 floats), whose bone lengths size the capsules. */
+  constructor(skeleton: Skeleton, readonly person: number, rest: Float32Array) {
+    const colours = jointColours(skeleton, person);
+    this.bonePairs = bones(skeleton);
+    for (const [child, parent] of this.bonePairs) {
+      const length = Math.max(1e-3, this.point(rest, child, this.a).distanceTo(this.point(rest, parent, this.b)));
+      const radius = boneRadius(skeleton.joints[child]);
+      const geometry = new THREE.CapsuleGeometry(radius, length, 4, 12);
+      this.boneParts.push(this.add(geometry, colours[child]));
+      this.lengths.push(length);
+    }
+    skeleton.joints.forEach((name, j) => {
+      const adjacent = this.bonePairs
+        .filter(([c, p]) => c === j || p === j)
+        .map(([c]) => boneRadius(skeleton.joints[c]));
+      const r = name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
+      const light = new THREE.Color(colours[j]).lerp(new THREE.Color("#ffffff"), 0.18);
+      this.jointParts.push(this.add(new THREE.SphereGeometry(r, 16, 12), "#" + light.getHexString()));
+    });
+  }
+
+  private add(geometry: THREE.BufferGeometry, colour: string): Part {
+    const mat = material(colour);
+    const mesh = new THREE.Mesh(geometry, mat);
+    mesh.castShadow = true;
+    mesh.receiveShadow = true;
+    this.group.add(mesh);
+    return { mesh, mat, colour: new THREE.Color(colour) };
+  }
+
+  private point(f: Float32Array, j: number, out: THREE.Vector3): THREE.Vector3 {
+    return out.set(f[3 * j], f[3 * j + 1], f[3 * j + 2]);
+  }
+
+  /** Pose the mannequin: `joints` is one frame (66 floats); sets highlight colours. */
+  setPose(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
+    this.bonePairs.forEach(([child, parent], i) => {
+      const { mesh } = this.boneParts[i];
+      this.point(joints, parent, this.a);
+      this.point(joints, child, this.b);
+      mesh.position.addVectors(this.a, this.b).multiplyScalar(0.5);
+      const dir = this.b.sub(this.a);
+      const len = dir.length();
+      if (len > 1e-6) mesh.quaternion.setFromUnitVectors(UP, dir.divideScalar(len));
+      mesh.scale.set(1, len / this.lengths[i], 1);
+      this.paint(this.boneParts[i], penetrating.has(child) ? PENETRATION_COLOUR : null, 0.45);
+    });
+    this.jointParts.forEach((part, j) => {
+      this.point(joints, j, part.mesh.position);
+      const contact = contacts.has(j);
+      part.mesh.scale.setScalar(contact ? 1.5 : 1);
+      this.paint(part, contact ? CONTACT_COLOUR : null, 0.7);
+    });
+  }
+
+  private paint(part: Part, highlight: string | null, glow: number): void {
+    if (highlight) {
+      part.mat.color.set(highlight);
+      part.mat.emissive.set(highlight);
+      part.mat.emissiveIntensity = glow;
+    } else {
+      part.mat.color.copy(part.colour);
+      part.mat.emissive.set(0x000000);
+      part.mat.emissiveIntensity = 0;
+    }
+  }
+
+  dispose(): void {
+    for (const p of [...this.boneParts, ...this.jointParts]) {
+      p.mesh.geometry.dispose();
+      p.mat.dispose();
+    }
+    this.group.removeFromParent();
+  }
+}

@@ -1,0 +1,135 @@
+// The three.js stage: renderer, soft lights with shadows, ground grid, orbit camera and the
+// mannequins of the current motion. Renders on demand (when something changed).
+import * as THREE from "three";
+import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import type { Skeleton } from "../api/types";
+import type { FrameBuffer } from "../playback/frameBuffer";
+import { contactJoints, penetratingBones } from "./colours";
+import { Ground } from "./Ground";
+import { Mannequin } from "./Mannequin";
+
+const BACKGROUND = "#14161b";
+
+export class Stage {
+  readonly renderer: THREE.WebGLRenderer;
+  readonly scene = new THREE.Scene();
+  readonly camera = new THREE.PerspectiveCamera(40, 1, 0.05, 200);
+  readonly controls: OrbitControls;
+  private readonly sun = new THREE.DirectionalLight("#ffffff", 2.2);
+  private readonly ground = new Ground();
+  private mannequins: Mannequin[] = [];
+  private dirty = true;
+
+  constructor(readonly canvas: HTMLCanvasElement) {
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.shadowMap.enabled = true;
+    this.renderer.shadowMap.type = THREE.PCFShadowMap;
+    this.renderer.toneMapping = THREE.ACESFilmicToneMapping;
+    this.scene.background = new THREE.Color(BACKGROUND);
+    this.scene.fog = new THREE.Fog(BACKGROUND, 14, 40);
+
+    this.scene.add(new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4));
+    this.sun.position.set(3, 7, 5);
+    this.sun.castShadow = true;
+    this.sun.shadow.mapSize.set(2048, 2048);
+    this.sun.shadow.radius = 4;
+    this.sun.shadow.bias = -0.0005;
+    Object.assign(this.sun.shadow.camera, { left: -6, right: 6, top: 6, bottom: -6, near: 0.5, far: 30 });
+    this.scene.add(this.sun, this.sun.target);
+    const fill = new THREE.DirectionalLight("#9fb4ff", 0.5);
+    fill.position.set(-4, 3, -3);
+    this.scene.add(fill);
+
+    this.scene.add(this.ground.group);
+
+    this.camera.position.set(2.4, 1.8, 5.2);
+    this.controls = new OrbitControls(this.camera, canvas);
+    this.controls.target.set(0, 0.9, 0);
+    this.controls.enableDamping = false;
+    this.controls.maxPolarAngle = Math.PI * 0.495;
+    this.controls.minDistance = 0.8;
+    this.controls.maxDistance = 30;
+    this.controls.addEventListener("change", () => (this.dirty = true));
+    this.controls.update();
+  }
+
+  resize(width: number, height: number): void {
+    if (width <= 0 || height <= 0) return;
+    this.renderer.setSize(width, height, false);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    this.dirty = true;
+  }
+
+  /** Replace the mannequins with one per person of `buffer` (sized by its first frame). */
+  setPeople(skeleton: Skeleton, buffer: FrameBuffer): void {
+    this.clearPeople();
+    for (let p = 0; p < buffer.persons; p++) {
+      const m = new Mannequin(skeleton, p, buffer.frame(p, 0));
+      this.mannequins.push(m);
+      this.scene.add(m.group);
+    }
+    this.frameView(buffer);
+  }
+
+  clearPeople(): void {
+    if (!this.mannequins.length) return;
+    this.mannequins.forEach((m) => m.dispose());
+    this.mannequins = [];
+    this.dirty = true;
+  }
+
+  get people(): number {
+    return this.mannequins.length;
+  }
+
+  /** Aim the camera at the pelvis paths of the received frames, from the front-right. */
+  frameView(buffer: FrameBuffer): void {
+    const box = new THREE.Box3();
+    const v = new THREE.Vector3();
+    for (let p = 0; p < buffer.persons; p++) {
+      for (let t = 0; t < buffer.received; t++) box.expandByPoint(v.fromArray(buffer.frame(p, t), 0));
+    }
+    if (box.isEmpty()) return;
+    const centre = box.getCenter(new THREE.Vector3());
+    const size = box.getSize(new THREE.Vector3());
+    const span = Math.max(2.2, size.x, size.z, 1.8);
+    const distance = span / (2 * Math.tan(THREE.MathUtils.degToRad(this.camera.fov / 2))) + 1.0;
+    this.controls.target.set(centre.x, 0.9, centre.z);
+    const dir = new THREE.Vector3(0.42, 0.3, 1).normalize();
+    this.camera.position.copy(this.controls.target).addScaledVector(dir, distance);
+    this.sun.position.set(centre.x + 3, 7, centre.z + 5);
+    this.sun.target.position.set(centre.x, 0, centre.z);
+    this.ground.centreOn(centre.x, centre.z);
+    this.controls.update();
+    this.dirty = true;
+  }
+
+  /** Pose every mannequin at frame t of the buffer. */
+  pose(skeleton: Skeleton, buffer: FrameBuffer, t: number): void {
+    this.mannequins.forEach((m, p) => {
+      m.setPose(
+        buffer.frame(p, t),
+        contactJoints(buffer.contacts[t], p),
+        penetratingBones(skeleton, buffer.penetration[t], p),
+      );
+    });
+    this.dirty = true;
+  }
+
+  /** Render if anything changed; true when a frame was drawn. */
+  renderIfDirty(): boolean {
+    if (!this.dirty) return false;
+    this.renderer.render(this.scene, this.camera);
+    this.dirty = false;
+    return true;
+  }
+
+  dispose(): void {
+    this.clearPeople();
+    this.ground.dispose();
+    this.controls.dispose();
+    this.renderer.dispose();
+  }
+}

@@ -1,0 +1,76 @@
+// Hosts the three.js Stage and runs the render loop: advances the playback clock, poses the
+// mannequins from the FrameBuffer and renders when something changed. No per-frame React state
+// except the integer frame number the timeline shows.
+import { useEffect, useRef } from "react";
+import { advance, frameIndex } from "../playback/timeline";
+import { FPS, frames, playhead, renderStats, useStudio } from "../store";
+import { Stage } from "./Stage";
+
+export function Viewport() {
+  const canvasRef = useRef<HTMLCanvasElement>(null);
+
+  useEffect(() => {
+    const canvas = canvasRef.current;
+    if (!canvas) return;
+    const stage = new Stage(canvas);
+    const fit = () => stage.resize(canvas.clientWidth, canvas.clientHeight);
+    const observer = new ResizeObserver(fit);
+    observer.observe(canvas);
+    fit();
+
+    let generation = -1; // which FrameBuffer contents the mannequins were built for
+    let drawn = { frame: -1, version: -1 };
+    let framedComplete = false;
+    let last = performance.now();
+    let raf = 0;
+
+    const tick = (now: number) => {
+      raf = requestAnimationFrame(tick);
+      const dt = Math.min(0.1, (now - last) / 1000);
+      last = now;
+      const s = useStudio.getState();
+      const skeleton = s.skeleton;
+
+      if (frames.generation !== generation) {
+        stage.clearPeople();
+        if (skeleton && frames.received > 0) {
+          stage.setPeople(skeleton, frames);
+          generation = frames.generation;
+          drawn = { frame: -1, version: -1 };
+          framedComplete = frames.received >= frames.total;
+        }
+      }
+      if (stage.people > 0 && skeleton) {
+        const complete = frames.received >= frames.total;
+        if (complete && !framedComplete) {
+          stage.frameView(frames); // the whole path is known now
+          framedComplete = true;
+        }
+        const clock = advance({ pos: playhead.pos, playing: s.playing }, dt, {
+          fps: FPS,
+          speed: s.speed,
+          loop: s.loop,
+          available: frames.received,
+          total: frames.total,
+        });
+        playhead.pos = clock.pos;
+        const f = frameIndex(clock.pos, frames.received);
+        if (clock.playing !== s.playing) s.setPlaying(clock.playing);
+        if (f !== s.frame) useStudio.setState({ frame: f });
+        if (f !== drawn.frame || frames.version !== drawn.version) {
+          stage.pose(skeleton, frames, f);
+          drawn = { frame: f, version: frames.version };
+        }
+      }
+      if (stage.renderIfDirty()) renderStats.renders++;
+    };
+    raf = requestAnimationFrame(tick);
+    return () => {
+      cancelAnimationFrame(raf);
+      observer.disconnect();
+      stage.dispose();
+    };
+  }, []);
+
+  return <canvas ref={canvasRef} className="viewport-canvas" data-testid="viewport" />;
+}

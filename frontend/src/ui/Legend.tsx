@@ -1,0 +1,43 @@
+import { CONTACT_COLOUR, PENETRATION_COLOUR, partColour } from "../scene/colours";
+import { useStudio } from "../store";
+
+const PART_LABELS: Record<string, string> = {
+  left_upper: "Left upper",
+  right_upper: "Right upper",
+  left_lower: "Left lower",
+  right_lower: "Right lower",
+};
+
+/** Colour key: the four body parts (per person) and the contact / penetration highlights. */
+export function Legend() {
+  const skeleton = useStudio((s) => s.skeleton);
+  const persons = useStudio((s) => s.motionPersons);
+  if (!skeleton) return null;
+  const parts = Object.keys(skeleton.parts);
+  const people = persons === 2 ? [0, 1] : [0];
+  return (
+    <div className="legend" data-testid="legend" aria-label="Colour legend">
+      {people.map((p) => (
+        <div className="legend__row" key={p}>
+          {people.length > 1 && <span className="legend__person">Person {p + 1}</span>}
+          {parts.map((part) => (
+            <span className="legend__item" key={part}>
+              <i style={{ background: partColour(skeleton, part, p) }} />
+              {PART_LABELS[part] ?? part.replace("_", " ")}
+            </span>
+          ))}
+        </div>
+      ))}
+      <div className="legend__row">
+        <span className="legend__item">
+          <i className="round" style={{ background: CONTACT_COLOUR }} />
+          Contact
+        </span>
+        <span className="legend__item">
+          <i style={{ background: PENETRATION_COLOUR }} />
+          Penetration
+        </span>
+      </div>
+    </div>
+  );
+}

@@ -1,0 +1,23 @@
+import { useStudio } from "../store";
+
+/** Generation progress: frames received / total while the stream runs. */
+export function Progress() {
+  const { phase, received, total } = useStudio((s) => s.stream);
+  if (phase !== "connecting" && phase !== "generating") return null;
+  const fraction = total > 0 ? received / total : 0;
+  const label = total > 0 ? `Generating · ${received} / ${total} frames` : "Planning…";
+  return (
+    <div className="progress" data-testid="progress" role="status" aria-live="polite">
+      <div className="progress__label">{label}</div>
+      <div
+        className="progress__track"
+        role="progressbar"
+        aria-valuemin={0}
+        aria-valuemax={total || 1}
+        aria-valuenow={received}
+      >
+        <div className="progress__bar" style={{ width: `${(fraction * 100).toFixed(1)}%` }} />
+      </div>
+    </div>
+  );
+}

@@ -1,0 +1,72 @@
+import type { FormEvent } from "react";
+import { useShallow } from "zustand/react/shallow";
+import { generate } from "../studio";
+import { useStudio, type Persons } from "../store";
+
+const EXAMPLES = ["a person walks forward", "two people dance salsa", "a person jumps twice"];
+
+/** Prompt, number of people, duration and the Generate button. */
+export function PromptBar() {
+  const { prompt, persons, seconds, setPrompt, setPersons, setSeconds } = useStudio(
+    useShallow((s) => ({
+      prompt: s.prompt,
+      persons: s.persons,
+      seconds: s.seconds,
+      setPrompt: s.setPrompt,
+      setPersons: s.setPersons,
+      setSeconds: s.setSeconds,
+    })),
+  );
+  const phase = useStudio((s) => s.stream.phase);
+  const busy = phase === "connecting" || phase === "generating";
+
+  const submit = (e: FormEvent) => {
+    e.preventDefault();
+    if (!busy) void generate();
+  };
+
+  return (
+    <form className="prompt-bar" onSubmit={submit} aria-label="Generate a motion">
+      <input
+        className="prompt-bar__input"
+        data-testid="prompt"
+        aria-label="Prompt"
+        placeholder={`Describe a motion, e.g. “${EXAMPLES[(persons - 1) % EXAMPLES.length]}”`}
+        value={prompt}
+        maxLength={600}
+        onChange={(e) => setPrompt(e.target.value)}
+      />
+      <div className="segmented" role="group" aria-label="Persons">
+        {([1, 2] as Persons[]).map((n) => (
+          <button
+            key={n}
+            type="button"
+            data-testid={`persons-${n}`}
+            aria-pressed={persons === n}
+            className={persons === n ? "active" : ""}
+            onClick={() => setPersons(n)}
+            title={n === 1 ? "One person" : "Two people"}
+          >
+            {n === 1 ? "1 person" : "2 people"}
+          </button>
+        ))}
+      </div>
+      <label className="seconds">
+        <input
+          type="number"
+          data-testid="seconds"
+          aria-label="Seconds"
+          min={1}
+          max={20}
+          step={1}
+          value={seconds}
+          onChange={(e) => setSeconds(Number(e.target.value))}
+        />
+        <span>s</span>
+      </label>
+      <button className="primary" type="submit" data-testid="generate" disabled={busy}>
+        {busy ? "Generating…" : "Generate"}
+      </button>
+    </form>
+  );
+}

@@ -1,0 +1,63 @@
+import { useState } from "react";
+import { exportUrl, shareUrl } from "../api/client";
+import { useStudio } from "../store";
+
+/** Share link (copied to the clipboard and shown) and downloads: BVH per person, JSON. */
+export function ShareExport() {
+  const motionId = useStudio((s) => s.motionId);
+  const persons = useStudio((s) => s.motionPersons);
+  const done = useStudio((s) => s.stream.phase === "done");
+  const [copied, setCopied] = useState<{ id: string; url: string; ok: boolean } | null>(null);
+  const ready = Boolean(motionId && done);
+  const link = copied && copied.id === motionId ? copied : null;
+
+  const share = async () => {
+    if (!motionId) return;
+    const url = shareUrl(motionId);
+    let ok = true;
+    try {
+      await navigator.clipboard.writeText(url);
+    } catch {
+      ok = false; // no clipboard permission: the link is still shown to copy by hand
+    }
+    setCopied({ id: motionId, url, ok });
+  };
+
+  return (
+    <section className="panel" aria-labelledby="share-title">
+      <h2 id="share-title">Share &amp; export</h2>
+      <div className="button-row">
+        <button data-testid="share" onClick={share} disabled={!ready}>
+          Share link
+        </button>
+        {Array.from({ length: ready ? persons : 1 }, (_, p) => (
+          <a
+            key={p}
+            className={`button${ready ? "" : " disabled"}`}
+            data-testid={`export-bvh-${p}`}
+            href={ready && motionId ? exportUrl(motionId, "bvh", p) : undefined}
+            aria-disabled={!ready}
+            download
+          >
+            BVH{persons === 2 ? ` · person ${p + 1}` : ""}
+          </a>
+        ))}
+        <a
+          className={`button${ready ? "" : " disabled"}`}
+          data-testid="export-json"
+          href={ready && motionId ? exportUrl(motionId, "json") : undefined}
+          aria-disabled={!ready}
+          download
+        >
+          JSON
+        </a>
+      </div>
+      {link && (
+        <div className="share-link">
+          <input readOnly value={link.url} data-testid="share-url" aria-label="Share link" onFocus={(e) => e.target.select()} />
+          <span className="muted small">{link.ok ? "Copied to the clipboard." : "Copy this link."}</span>
+        </div>
+      )}
+    </section>
+  );
+}
