@@ -68,6 +68,8 @@ KNEE_RAISED_DEG = 60.0     # thigh this far from vertical with the foot up: knee
 KICK_SPEED = 2.0           # m/s forward toe speed relative to the pelvis (walking swing ~1–1.5)
 KICK_HEIGHT = 0.30         # toe height of a kick; a walking/jogging swing stays lower in front
 KICK_REACH = 0.25          # toe ahead of the pelvis (m) when kicking forward
+GROUND_KICK_SPEED = 6.0    # m/s: a kick along the ground (CMU soccer: 7–9) at any height or
+                           # gait; running swings stay under ~4, HDM05 front kicks reach 4.5–7
 
 # --- whole body ---
 MOVE_SPEED = 0.35          # m/s root speed above which the person travels (slow walk ~0.6)
@@ -221,8 +223,9 @@ def _legs(b: BodyFrame, codes: dict) -> None:
         toe_fwd_v = b.local(b.velocity[:, toe] - b.velocity[:, sk.PELVIS])[2]
         reach = b.local(b.joints[:, toe] - pelvis)[2]
         toe_up = b.height[:, toe] - b.toe_ground
-        codes[f"{side}_foot_kicking"] = ((toe_fwd_v > KICK_SPEED) & (toe_up > KICK_HEIGHT)
-                                         & (reach > KICK_REACH) & ~codes["running_gait"])
+        high_kick = ((toe_fwd_v > KICK_SPEED) & (toe_up > KICK_HEIGHT) & (reach > KICK_REACH)
+                     & ~codes["running_gait"])
+        codes[f"{side}_foot_kicking"] = high_kick | (toe_fwd_v > GROUND_KICK_SPEED)
 
 
 def _arms(b: BodyFrame, codes: dict) -> None:
