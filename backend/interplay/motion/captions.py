@@ -215,17 +215,21 @@ def _notable(cap: Caption) -> bool:
 
 def summarise(captions: list[Caption], max_body: int = 3, max_parts: int = 2) -> str:
     """One sentence: what the body does in order ("walks forward, then jumps"), then the most
-    lasting notable part captions."""
+    telling part captions (events before postures, longer first, one per part)."""
     body = [c.text for c in sorted((c for c in captions if c.part == "body"), key=lambda c: c.start)]
     quiet = ("the person stands still", "the person stays in place")
     busy = [x for x in body if x not in quiet] or body[:1]
     steps = [x for i, x in enumerate(busy) if i == 0 or x != busy[i - 1]]
     steps = [s if i == 0 else s.removeprefix("the person ") for i, s in enumerate(steps[:max_body])]
-    frames: dict[str, int] = {}
+    frames: dict[tuple[str, str], int] = {}
     for c in captions:
         if c.part != "body" and _notable(c):
-            frames[c.text] = frames.get(c.text, 0) + c.end - c.start
-    parts = sorted(frames, key=lambda k: (any(m in k for m in MINOR), -frames[k]))[:max_parts]
+            frames[c.part, c.text] = frames.get((c.part, c.text), 0) + c.end - c.start
+    parts, used = [], set()
+    for part, text in sorted(frames, key=lambda k: (any(m in k[1] for m in MINOR), -frames[k])):
+        if part not in used and len(parts) < max_parts:      # one caption per part
+            parts.append(text)
+            used.add(part)
     sentence = ", then ".join(steps) if steps else "the person does not move"
     if parts:
         sentence += "; " + " and ".join(parts)
