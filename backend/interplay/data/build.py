@@ -23,6 +23,8 @@ DEFAULT_SOURCE = REPO.parent / "shared" / "data"
 # HDM05's actor "mm" is held out entirely as the test set: unseen performer, every class.
 HDM05_TEST_ACTOR = "mm"
 SPLIT_SHARES = {"test": 0.15, "val": 0.10}
+# Raw files left out of the set, with the reasons (broken root tracks …); listed in the card.
+SKIPPED: list[tuple[str, list[str]]] = []
 
 
 def _stable_rank(key: str) -> str:
@@ -52,7 +54,12 @@ def build_cmu_bvh(src: Path) -> list[Clip]:
         subject, trial = (int(x) for x in path.stem.split("_")[:2])
         description, index_fps = index.get((subject, trial), ("unknown", 120))
         joints, offsets, meta = load_cmu_bvh(path)
-        meta.update({"file": f"cmu-bvh/{path.parent.name}/{path.name}", "index_fps": index_fps})
+        meta.update({"file": f"cmu-bvh/{path.parent.name}/{path.name}", "index_fps": index_fps,
+                     "source_fps": meta["native_fps"]})
+        if meta.get("defects"):
+            print(f"  skipped {path.name}: {'; '.join(meta['defects'])}", flush=True)
+            SKIPPED.append((f"cmu-bvh/{path.parent.name}/{path.name}", meta["defects"]))
+            continue
         clips.append(Clip(id=f"cmu:{path.stem}", source="cmu-bvh", people=[joints], offsets=[offsets],
                           label=description, prompt=cmu_prompt(description), licence="CMU", meta=meta))
     return clips
@@ -69,7 +76,14 @@ def build_salsa(src: Path) -> list[Clip]:
             continue
         people, offsets, meta = load_salsa_pair(lead, follow)
         meta.update({"files": [f"cmu-salsa/60/{lead.name}", f"cmu-salsa/61/{follow.name}"],
-                     "roles": ["lead (subject 60)", "follow (subject 61)"]})
+                     "roles": ["lead (subject 60)", "follow (subject 61)"],
+                     "source_fps": meta["native_fps"],
+                     "fps_note": "cmu-salsa: headers say 120 fps, CMU's index 60; the motion decides 60 "
+                                 "(centre-of-mass acceleration and turn timing; evidence in "
+                                 "interplay/motion/retarget/frame_rate.py)."})
+        if meta.get("defects"):
+            SKIPPED.append((f"cmu-salsa/{lead.name}", meta["defects"]))
+            continue
         clips.append(Clip(id=f"salsa:{pair}", source="cmu-salsa", people=people, offsets=offsets,
                           label="salsa dance", prompt=cmu_prompt("salsa dance"), licence="CMU",
                           meta=meta))
@@ -170,7 +184,7 @@ def main(argv: list[str] | None = None) -> int:
     add_captions(clips)
     print(f"captions     {sum(len(c.captions) for c in clips):4d}       {time.time() - t0:6.1f} s")
     save_clips(clips, args.out)
-    write_card(clips, args.out)
+    write_card(clips, args.out, skipped=SKIPPED)
     print(f"wrote {len(clips)} clips to {args.out}")
     return 0
 

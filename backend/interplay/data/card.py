@@ -32,7 +32,7 @@ def _hours(frames: int) -> float:
     return frames / FPS / 3600
 
 
-def write_card(clips: list[Clip], out_dir: Path) -> None:
+def write_card(clips: list[Clip], out_dir: Path, skipped: list[tuple[str, list[str]]] = ()) -> None:
     by_source: dict[str, list[Clip]] = defaultdict(list)
     for c in clips:
         by_source[c.source].append(c)
@@ -61,8 +61,14 @@ def write_card(clips: list[Clip], out_dir: Path) -> None:
     lines += [f"| **all** | | {len(clips)} | {total} | {_hours(total):.2f} | | |", ""]
 
     notes = sorted({c.meta["fps_note"] for c in clips if c.meta.get("fps_note")})
-    if notes:
-        lines += ["## Frame rates", "", *[f"- {n}" for n in notes], ""]
+    notes += ["cmu-bvh: 120 fps (gravity in jumps: the pelvis falls at 8.6–10.0 m/s² at 120 fps; "
+              "16_01/16_02 headers say 30 but fall at 9.9–10.0 m/s² at 120, so CMU's index is right).",
+              "hdm05: 120 fps (file names and headers agree).",
+              "cmu-8action: undocumented; 120 fps from walking cadence (walks 1.6–1.9 steps/s at "
+              "0.9–1.4 m/s; at 60 fps they would be 0.8–0.9 steps/s)."]
+    lines += ["## Frame rates", "", *[f"- {n}" for n in notes], ""]
+    if skipped:
+        lines += ["## Left out", "", *[f"- `{f}`: {'; '.join(r)}" for f, r in skipped], ""]
 
     lines += ["## Split (by trial, never by window)", "",
               "- CMU trials and salsa pairs: within each action family, trials ordered by a stable hash;",
