@@ -1,0 +1,75 @@
+"""The data build on the committed raw fixtures (the same folder layout as ../shared/data),
+and invariants of the processed set the app ships."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from interplay.data import build
+from interplay.motion import skeleton as sk
+from interplay.motion.clip import default_clips, load_clips
+
+RAW = Path(__file__).resolve().parents[1] / "fixtures" / "raw"
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    out = tmp_path_factory.mktemp("data")
+    build.SKIPPED.clear()
+    assert build.main(["--source", str(RAW), "--out", str(out)]) == 0
+    return out, load_clips(out)
+
+
+def test_build_reads_every_source_and_leaves_out_broken_trials(built):
+    out, clips = built
+    assert {c.source for c in clips} == {"cmu-bvh", "cmu-salsa", "hdm05", "cmu-8action"}
+    assert "cmu:07_12" not in {c.id for c in clips}  # broken root track
+    assert any("07_12" in f for f, _ in build.SKIPPED)
+    salsa = [c for c in clips if c.source == "cmu-salsa"]
+    assert salsa and all(len(c.people) == 2 for c in salsa)
+    card = (out / "README.md").read_text()
+    assert "07_12" in card and "CC BY-SA 3.0" in card
+    assert f"| **all** | | {len(clips)} |" in card
+    # HDM05-derived data stays in its own file.
+    assert {c.licence for c in clips if c.source == "hdm05"} == {"CC BY-SA 3.0 (HDM05)"}
+    assert (out / "hdm05.npz").exists()
+
+
+def test_build_labels_and_captions(built):
+    _, clips = built
+    by_id = {c.id: c for c in clips}
+    assert by_id["cmu:02_01"].prompt == "a person walks forward"
+    assert by_id["salsa:01"].prompt == "two people dance salsa"
+    assert all(c.prompt and c.captions for c in clips)
+    assert all(cap.part in ("body",) + sk.PART_NAMES for c in clips for cap in c.captions)
+
+
+def test_stratified_split_is_by_trial_and_stable():
+    ids = {"walk": [f"w{i}" for i in range(20)], "jump": ["j1", "j2", "j3"], "solo": ["s1"]}
+    a, b = build.stratified_split(ids), build.stratified_split(ids)
+    assert a == b
+    walk = [a[i] for i in ids["walk"]]
+    assert walk.count("test") == 3 and walk.count("val") == 2
+    assert [a[i] for i in ids["jump"]].count("test") == 1
+    assert a["s1"] == "train"
+
+
+def test_processed_set_invariants():
+    clips = default_clips()
+    assert len(clips) > 300
+    splits = {c.split for c in clips}
+    assert splits == {"train", "val", "test"}
+    hdm_test = {c.meta["actor"] for c in clips if c.source == "hdm05" and c.split == "test"}
+    assert hdm_test == {build.HDM05_TEST_ACTOR}
+    for c in clips:
+        for joints, offsets in zip(c.people, c.offsets):
+            assert joints.shape[1:] == (sk.NUM_JOINTS, 3) and np.isfinite(joints).all()
+            lengths = sk.bone_lengths(joints)
+            # float16 storage: bones stay within a few millimetres of the person's offsets.
+            want = np.linalg.norm(offsets[1:], axis=-1)
+            assert np.abs(lengths - want).max() < 0.01, c.id
+        # Canonical frame: floor at 0 (lowest 2% of frames), first person starts at the origin.
+        lowest = np.concatenate([p[:, :, 1].min(axis=1) for p in c.people])
+        assert abs(np.percentile(lowest, 2)) < 0.01, c.id
+        assert np.abs(c.people[0][0, sk.PELVIS, [0, 2]]).max() < 0.01, c.id
