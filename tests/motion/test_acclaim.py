@@ -1,5 +1,5 @@
 """Acclaim ASF/AMC reader and FK: a hand-made skeleton with answers worked out by hand, and
-real HDM05 files (tests/fixtures/raw, made by tests/fixtures/make_fixtures_hdm05_8action.py)."""
+real HDM05 files (tests/fixtures/raw, made by tests/fixtures/make_fixtures.py)."""
 
 from pathlib import Path
 

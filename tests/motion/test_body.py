@@ -1,5 +1,5 @@
 """The 45-sphere body and its intersection volume, on real CMU captures (tests/fixtures/raw,
-made by tests/fixtures/make_fixtures_cmu.py): a walk and the salsa pair 60_01/61_01."""
+made by tests/fixtures/make_fixtures.py): a walk and the salsa pair 60_01/61_01."""
 
 from pathlib import Path
 

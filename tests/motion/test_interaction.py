@@ -1,5 +1,5 @@
 """CODA's two-person geometry (joint distance map, Gaussian weights, part chains, AABB, eq. 6
-and 7) on the real salsa pair 60_01/61_01 (tests/fixtures/raw, made by make_fixtures_cmu.py)."""
+and 7) on the real salsa pair 60_01/61_01 (tests/fixtures/raw, made by tests/fixtures/make_fixtures.py)."""
 
 from pathlib import Path
 

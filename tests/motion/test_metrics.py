@@ -2,7 +2,6 @@
 interplay.motion.clip.default_clips): CMU and CMU 8-action walks, jumps, the salsa pairs."""
 
 import json
-import time
 
 import numpy as np
 import pytest
@@ -164,19 +163,6 @@ def test_one_person_json_and_contract(walks):
     h = m.frame_highlights([walks[0]])
     assert h["min_distance"] is None and not any(h["penetration"])
     assert all(p == 0 and j in sk.FOOT_JOINTS for f in h["contacts"] for p, j in f)
-
-
-def test_a_20_second_duet_is_measured_fast(salsa):
-    pair = [p[:400] for p in max(salsa, key=lambda p: p[0].shape[0])]
-    assert pair[0].shape[0] == 400
-    best = min(_timed(m.clip_metrics, pair) for _ in range(3))
-    assert best < 0.1
-
-
-def _timed(fn, arg) -> float:
-    t0 = time.perf_counter()
-    fn(arg)
-    return time.perf_counter() - t0
 
 
 def test_bad_input_is_refused(walks):

@@ -1,5 +1,5 @@
 """Pose codes and automatic part captions on real capture clips (tests/fixtures/raw, made by
-make_fixtures_hdm05_8action.py and make_fixtures_posecodes.py), plus the processed set when
+tests/fixtures/make_fixtures.py), plus the processed set when
 it is built."""
 
 import os

@@ -1,5 +1,5 @@
 """CMU 8-action (38-joint exp-map text) → SMPL-22 on real files (tests/fixtures/raw, made by
-make_fixtures_hdm05_8action.py): the walk moves forward at walking speed and cadence at the
+tests/fixtures/make_fixtures.py): the walk moves forward at walking speed and cadence at the
 chosen frame rate."""
 
 from pathlib import Path

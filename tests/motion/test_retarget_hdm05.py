@@ -1,4 +1,4 @@
-"""HDM05 → SMPL-22 on real clips (tests/fixtures/raw, made by make_fixtures_hdm05_8action.py)."""
+"""HDM05 → SMPL-22 on real clips (tests/fixtures/raw, made by tests/fixtures/make_fixtures.py)."""
 
 from pathlib import Path
 
