@@ -1,5 +1,5 @@
 import numpy as np
-from conftest import fk_motion
+from synthetic_motion import fk_motion
 
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import facing_angle, fit_offsets

@@ -55,6 +55,11 @@ def _rng(seed: int, segment: int) -> np.random.Generator:
     return np.random.default_rng([seed % 2**63, segment])
 
 
+def _pair_end(after: list[dict]) -> dict | None:
+    """The previous segment's end as one two-person piece, if it was one."""
+    return after[0] if len(after) == 1 and len(after[0]["people"]) == 2 else None
+
+
 def _optional(name: str):
     """A function of interplay.motion.metrics if that module exists yet, else None."""
     try:
@@ -75,16 +80,20 @@ class Generator:
         pelvis = self.index.clip(p["clip"]).people[p["people"][0]][[p["start"], p["end"] - 1], PELVIS]
         return float(np.hypot(*(pelvis[1] - pelvis[0])[[0, 2]]))
 
-    def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator) -> dict:
-        """The captured pieces for one segment: {"mode", "tracks", "synthetic"[, "arrangement"]}."""
-        idx = self.index
+    def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator,
+                 after: list[dict] | None = None) -> dict:
+        """The captured pieces for one segment: {"mode", "tracks", "synthetic"[, "arrangement"]};
+        `after` holds the previous segment's last piece per track, whose end pose the new
+        pieces start from."""
+        idx, after = self.index, after or []
         if persons == 2 and idx.use_pair(prompt):
             return {"mode": "pair", "synthetic": False,
-                    "tracks": [idx.track(prompt, frames, rng, pair=True)]}
-        first = idx.track(prompt, frames, rng)
+                    "tracks": [idx.track(prompt, frames, rng, pair=True, after=_pair_end(after))]}
+        first = idx.track(prompt, frames, rng, after=after[0] if after else None)
         if persons == 1:
             return {"mode": "single", "synthetic": False, "tracks": [first]}
-        second = idx.track(prompt, frames, rng, exclude={first[0]["clip"]})
+        second = idx.track(prompt, frames, rng, exclude={first[0]["clip"]},
+                           after=after[1] if len(after) > 1 else None)
         travel = max(self._travel(first), self._travel(second))
         return {"mode": "composed", "synthetic": True, "tracks": [first, second],
                 "arrangement": "side_by_side" if travel > TRAVEL else "facing"}
@@ -93,9 +102,11 @@ class Generator:
         """The basic plan plus, per segment, the captures chosen for it and the seed used."""
         plan = basic_plan(req.prompt, req.persons, req.seconds)
         seed = req.seed if req.seed is not None else secrets.randbelow(2**31)
+        after = None
         for seg in plan["segments"]:
             seg["retrieval"] = self.retrieve(seg["prompt"], seg["end"] - seg["start"], req.persons,
-                                             _rng(seed, seg["index"]))
+                                             _rng(seed, seg["index"]), after)
+            after = [t[-1] for t in seg["retrieval"]["tracks"]]
         clips = {p["clip"] for s in plan["segments"] for t in s["retrieval"]["tracks"] for p in t}
         plan.update({"seed": seed, "generator": "retrieval",
                      "synthetic": any(s["retrieval"]["synthetic"] for s in plan["segments"]),
@@ -130,14 +141,15 @@ class Generator:
         """(start frame, one (n, 22, 3) float32 chunk per person), in order, n ≤ 40, covering
         every frame of the plan (round(seconds × 20))."""
         persons, seed = plan.get("persons", req.persons), plan.get("seed", req.seed or 0)
-        stitcher, expected = Stitcher(persons), 0
+        stitcher, expected, after = Stitcher(persons), 0, None
         for seg in plan["segments"]:
             start, end = int(seg["start"]), int(seg["end"])
             if start != expected or end <= start:
                 raise ValueError(f"plan segments must tile the motion; segment {seg.get('index')} "
                                  f"spans {start}–{end}, expected to start at {expected}")
             retrieval = seg.get("retrieval") or self.retrieve(seg["prompt"], end - start, persons,
-                                                              _rng(seed, seg.get("index", 0)))
+                                                              _rng(seed, seg.get("index", 0)), after)
+            after = [t[-1] for t in retrieval["tracks"]]
             frames = self._render(stitcher, retrieval, persons)
             if any(len(f) != end - start for f in frames):
                 raise ValueError(f"segment {seg.get('index')}: the plan's pieces do not last "

@@ -68,10 +68,17 @@ def rigid_yaw(joints: np.ndarray, yaw: float, pivot: np.ndarray, target: np.ndar
     return (joints - p) @ rot.T + t
 
 
+def leg_length(offsets: np.ndarray) -> float:
+    """Thigh + shin length (mean of both legs) of a performer's rest offsets."""
+    j = sk.JOINT_INDEX
+    return float(np.mean([np.linalg.norm(offsets[j[f"{side}_knee"]]) + np.linalg.norm(offsets[j[f"{side}_ankle"]])
+                          for side in ("left", "right")]))
+
+
 def scale_root(piece: Piece, offsets: np.ndarray) -> Piece:
-    """Scale a piece's root path to a performer with other offsets (ratio of rest pelvis
-    heights), so strides and pelvis height suit the legs it will be refit to."""
-    s = float(offsets[sk.PELVIS, 1] / max(piece.offsets[sk.PELVIS, 1], 1e-6))
+    """Scale a piece's root path to a performer with other legs (ratio of leg lengths), so
+    strides and pelvis height suit the bones it will be refit to."""
+    s = leg_length(offsets) / max(leg_length(piece.offsets), 1e-6)
     if abs(s - 1.0) < 1e-6:
         return piece
 
@@ -81,9 +88,20 @@ def scale_root(piece: Piece, offsets: np.ndarray) -> Piece:
     return Piece(scaled(piece.core), scaled(piece.tail), piece.offsets)
 
 
+def refit(joints: np.ndarray, offsets: np.ndarray) -> np.ndarray:
+    """IK → FK onto fixed bones, then each frame raised or lowered so its lowest joint stays
+    where the capture had it (other bone lengths would otherwise sink or lift the feet)."""
+    if len(joints) == 0:
+        return joints
+    out, _ = fit_to_skeleton(joints, offsets)
+    out[..., 1] += (joints[..., 1].min(axis=1) - out[..., 1].min(axis=1))[:, None]
+    return out
+
+
 def _continuation(prev: np.ndarray, tail: np.ndarray, n: int) -> np.ndarray:
-    """n frames continuing prev (≥ 2 frames): the captured tail, then the last pose held with
-    the pelvis gliding on at its last ground velocity."""
+    """n frames continuing prev (the last output frames): the capture's own tail, then its last
+    pose held with the pelvis gliding on at its last ground velocity. (Tried instead: moving
+    the held pose the way the new piece moves; it gave rougher pelvis paths at the seams.)"""
     tail = tail[:n]
     if len(tail) == n:
         return tail
@@ -139,8 +157,8 @@ class Stitcher:
         if self.last[person] is not None:
             cont = _continuation(self.last[person], self.tail[person], min(FADE, len(core)))
             core = crossfade(cont, core)
-        out, _ = fit_to_skeleton(core, off)
-        tail = fit_to_skeleton(piece.tail.astype(np.float64), off)[0] if len(piece.tail) else piece.tail
+        out = refit(core, off)
+        tail = refit(piece.tail.astype(np.float64), off)
         self.last[person] = np.concatenate([self.last[person], out])[-HEADING:] \
             if self.last[person] is not None else out[-HEADING:]
         self.tail[person] = tail

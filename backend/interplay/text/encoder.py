@@ -8,6 +8,7 @@ L2-normalised, so a dot product is a cosine similarity.
 
 from __future__ import annotations
 
+import threading
 from collections import OrderedDict
 from functools import lru_cache
 from pathlib import Path
@@ -47,6 +48,7 @@ class TextEncoder:
         self.batch_size = batch_size
         self.cache_size = cache_size
         self._cache: OrderedDict[str, np.ndarray] = OrderedDict()
+        self._lock = threading.Lock()   # requests may encode from several threads
 
     def _embed(self, texts: list[str]) -> np.ndarray:
         """Embeddings (n, 384) of one batch, without the cache."""
@@ -69,6 +71,10 @@ class TextEncoder:
         """Unit embeddings (N, 384) float32, in the order given."""
         if isinstance(texts, str):
             raise ValueError("encode() takes a list of strings, not a single string")
+        with self._lock:
+            return self._encode(list(texts))
+
+    def _encode(self, texts: list[str]) -> np.ndarray:
         missing = list(dict.fromkeys(t for t in texts if t not in self._cache))
         for i in range(0, len(missing), self.batch_size):
             batch = missing[i:i + self.batch_size]
