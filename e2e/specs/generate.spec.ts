@@ -11,6 +11,8 @@ test("a person walks forward: frames stream in and play on a non-blank canvas", 
   await page.waitForFunction(() => window.__interplay.framesReceived > 0);
   const streaming = await hook(page);
   expect(streaming.persons).toBe(1);
+  // headless chromium renders with SwiftShader: the light settings
+  expect(streaming.quality).toBe("light");
   const done = await waitDone(page);
 
   // the timeline is as long as asked for

@@ -14,6 +14,7 @@ export interface HookSnapshot {
   firstFrame: number[][][];
   currentFrame: number;
   renderCount: number;
+  quality: string;
 }
 
 interface BvhSummary {
@@ -54,6 +55,7 @@ export function hook(page: Page): Promise<HookSnapshot> {
       firstFrame: h.firstFrame,
       currentFrame: h.currentFrame,
       renderCount: h.renderCount,
+      quality: h.quality,
     };
   });
 }

@@ -12,7 +12,7 @@ export const frames = new FrameBuffer();
 /** The playback clock: a fractional frame position, advanced by the render loop. */
 export const playhead = { pos: 0 };
 /** Counters the render loop keeps (read by the test hook). */
-export const renderStats = { renders: 0 };
+export const renderStats: { renders: number; quality: string } = { renders: 0, quality: "" };
 
 export type Persons = 1 | 2;
 
@@ -24,7 +24,6 @@ export interface StudioState {
   // the current motion and its stream
   stream: StreamState;
   motionId: string | null;
-  motionPrompt: string;
   motionPersons: number;
   skeleton: Skeleton | null;
   error: string | null;
@@ -51,7 +50,6 @@ export const useStudio = create<StudioState>()((set) => ({
   seconds: 4,
   stream: initialStream,
   motionId: null,
-  motionPrompt: "",
   motionPersons: 0,
   skeleton: null,
   error: null,

@@ -54,7 +54,6 @@ export async function generate(): Promise<void> {
   useStudio.setState({
     stream: startStream(),
     motionId: null,
-    motionPrompt: prompt,
     motionPersons: persons,
     frame: 0,
     playing: true,
@@ -83,7 +82,6 @@ export async function openMotion(id: string): Promise<void> {
         error: null,
       },
       motionId: motion.id,
-      motionPrompt: motion.prompt,
       motionPersons: motion.people.length,
       prompt: motion.prompt,
       persons: motion.people.length === 2 ? 2 : 1,

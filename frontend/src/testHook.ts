@@ -19,6 +19,8 @@ export interface InterplayTestHook {
   readonly firstFrame: number[][][];
   readonly currentFrame: number;
   readonly renderCount: number;
+  /** "full" or "light" (software WebGL: no MSAA, blob shadows). */
+  readonly quality: string;
   /** Parse BVH text with three.js's BVHLoader (loaded on demand) and summarise its skeleton. */
   parseBvh(text: string): Promise<BvhSummary>;
 }
@@ -65,6 +67,9 @@ export function installTestHook(target: Window = window): void {
     },
     get renderCount() {
       return renderStats.renders;
+    },
+    get quality() {
+      return renderStats.quality;
     },
     parseBvh,
   };

@@ -18,15 +18,20 @@ export interface JobCreated {
   stream: string;
 }
 
+/** A planned segment; start/end are frame indices (20 fps), persons the people it moves
+ * (a count or a list of person indices). */
 export interface PlanSegment {
   prompt: string;
   start: number;
   end: number;
-  persons: number;
+  persons: number | number[];
 }
 
 export interface Plan {
   segments: PlanSegment[];
+  planner?: string;
+  generator?: string;
+  rewritten?: string;
   [key: string]: unknown;
 }
 

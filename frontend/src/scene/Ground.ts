@@ -1,7 +1,8 @@
-// The floor: a matte plane that takes the shadows, and a grid drawn in a fragment shader on a
-// second plane (minor lines every 0.5 m, major every 2 m, fading with distance). A shader grid
+// The floor: one opaque plane whose fragment shader draws the floor colour, a grid (minor lines
+// every 0.5 m, major every 2 m) and a fade into the background with distance. A shader grid
 // rather than GridHelper lines: long lines that pass behind the camera are clipped wrongly by
-// some software rasterisers (SwiftShader drops them), triangles are not.
+// some software rasterisers (SwiftShader drops them), triangles are not. With a shadow map, a
+// ShadowMaterial plane on top darkens where the people's shadows fall.
 import * as THREE from "three";
 
 const vertexShader = /* glsl */ `
@@ -14,68 +15,73 @@ const vertexShader = /* glsl */ `
 `;
 
 const fragmentShader = /* glsl */ `
+  uniform vec3 uFloor;
   uniform vec3 uMinor;
   uniform vec3 uMajor;
+  uniform vec3 uFar;
   uniform vec2 uCentre;
   uniform float uRadius;
   varying vec3 vWorld;
 
-  float lines(vec2 p, float spacing) {
-    vec2 c = p / spacing;
-    vec2 g = abs(fract(c - 0.5) - 0.5) / fwidth(c);
+  // 1 on a line of the grid with this spacing, 0 off it; antialiased over one pixel (w: the
+  // world size of a pixel).
+  float lines(vec2 p, vec2 w, float spacing) {
+    vec2 g = abs(fract(p / spacing - 0.5) - 0.5) * spacing / w;
     return 1.0 - min(min(g.x, g.y), 1.0);
   }
 
   void main() {
-    float minor = lines(vWorld.xz, 0.5);
-    float major = lines(vWorld.xz, 2.0);
-    float fade = 1.0 - smoothstep(uRadius * 0.35, uRadius, length(vWorld.xz - uCentre));
-    vec3 colour = mix(uMinor, uMajor, major);
-    float alpha = max(minor * 0.55, major * 0.85) * fade;
-    if (alpha < 0.004) discard;
-    gl_FragColor = vec4(colour, alpha);
+    vec2 w = fwidth(vWorld.xz);
+    vec3 colour = mix(uFloor, uMinor, lines(vWorld.xz, w, 0.5) * 0.8);
+    colour = mix(colour, uMajor, lines(vWorld.xz, w, 2.0) * 0.9);
+    float fade = smoothstep(uRadius * 0.3, uRadius, length(vWorld.xz - uCentre));
+    // colours are display (sRGB) values already: no colour-space conversion per pixel
+    gl_FragColor = vec4(mix(colour, uFar, fade), 1.0);
   }
 `;
+
+/** A #rrggbb colour as raw display values (no conversion to the linear working space). */
+function display(hex: string): THREE.Vector3 {
+  const c = new THREE.Color().setStyle(hex, THREE.LinearSRGBColorSpace);
+  return new THREE.Vector3(c.r, c.g, c.b);
+}
 
 export class Ground {
   readonly group = new THREE.Group();
   private readonly uniforms = {
-    uMinor: { value: new THREE.Color("#2c323e") },
-    uMajor: { value: new THREE.Color("#465066") },
+    uFloor: { value: display("#181b22") },
+    uMinor: { value: display("#252a34") },
+    uMajor: { value: display("#363e4e") },
+    uFar: { value: display("#14161b") },
     uCentre: { value: new THREE.Vector2(0, 0) },
-    uRadius: { value: 18 },
+    uRadius: { value: 22 },
   };
 
-  constructor(floorColour = "#15181e") {
+  constructor(background: string, shadows: boolean) {
+    this.uniforms.uFar.value.copy(display(background));
     const floor = new THREE.Mesh(
-      new THREE.PlaneGeometry(120, 120),
-      new THREE.MeshStandardMaterial({ color: floorColour, roughness: 0.95, metalness: 0 }),
+      new THREE.PlaneGeometry(200, 200),
+      new THREE.ShaderMaterial({ uniforms: this.uniforms, vertexShader, fragmentShader, toneMapped: false }),
     );
     floor.rotation.x = -Math.PI / 2;
-    floor.receiveShadow = true;
-
-    const grid = new THREE.Mesh(
-      new THREE.PlaneGeometry(120, 120),
-      new THREE.ShaderMaterial({
-        uniforms: this.uniforms,
-        vertexShader,
-        fragmentShader,
-        transparent: true,
-        depthWrite: false,
-        polygonOffset: true,
-        polygonOffsetFactor: -1,
-        polygonOffsetUnits: -1,
-      }),
-    );
-    grid.rotation.x = -Math.PI / 2;
-    grid.position.y = 0.001;
-    grid.renderOrder = -1;
-    this.group.add(floor, grid);
+    this.group.add(floor);
+    if (shadows) {
+      const catcher = new THREE.Mesh(
+        new THREE.PlaneGeometry(60, 60),
+        new THREE.ShadowMaterial({ opacity: 0.5, depthWrite: false }),
+      );
+      catcher.rotation.x = -Math.PI / 2;
+      catcher.position.y = 0.001;
+      catcher.receiveShadow = true;
+      this.group.add(catcher);
+    }
   }
 
-  /** Centre the grid's fade on a point of the floor (the camera's target). */
+  /** Centre the fade (and the shadow catcher) on a point of the floor. */
   centreOn(x: number, z: number): void {
     this.uniforms.uCentre.value.set(x, z);
+    const catcher = this.group.children[1];
+    catcher?.position.set(x, 0.001, z);
   }
 
   dispose(): void {

@@ -3,6 +3,7 @@
 import * as THREE from "three";
 import type { Skeleton } from "../api/types";
 import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
+import { QUALITY, type QualitySettings } from "./quality";
 
 // Capsule radius (m) of the bone ending at a joint, by joint name.
 const BONE_RADIUS: [RegExp, number][] = [
@@ -20,6 +21,30 @@ const BONE_RADIUS: [RegExp, number][] = [
 ];
 const HEAD_RADIUS = 0.1;
 const UP = new THREE.Vector3(0, 1, 0);
+// Blob shadows (when there is no shadow map): under the pelvis and each ankle, diameter in m.
+const BLOBS: [string, number][] = [
+  ["pelvis", 0.8],
+  ["left_ankle", 0.32],
+  ["right_ankle", 0.32],
+];
+
+let blobTexture: THREE.Texture | null = null;
+
+/** A soft round shadow: a radial gradient from dark to clear (made once). */
+function blobMap(): THREE.Texture {
+  if (blobTexture) return blobTexture;
+  const canvas = document.createElement("canvas");
+  canvas.width = canvas.height = 64;
+  const ctx = canvas.getContext("2d")!;
+  const g = ctx.createRadialGradient(32, 32, 0, 32, 32, 32);
+  g.addColorStop(0, "rgba(0,0,0,1)");
+  g.addColorStop(0.5, "rgba(0,0,0,0.55)");
+  g.addColorStop(1, "rgba(0,0,0,0)");
+  ctx.fillStyle = g;
+  ctx.fillRect(0, 0, 64, 64);
+  blobTexture = new THREE.CanvasTexture(canvas);
+  return blobTexture;
+}
 
 function boneRadius(name: string): number {
   return BONE_RADIUS.find(([re]) => re.test(name))?.[1] ?? 0.04;
@@ -41,17 +66,25 @@ export class Mannequin {
   private readonly boneParts: Part[] = [];
   private readonly lengths: number[] = [];
   private readonly jointParts: Part[] = [];
+  private readonly blobs: { joint: number; mesh: THREE.Mesh; mat: THREE.MeshBasicMaterial }[] = [];
   private readonly a = new THREE.Vector3();
   private readonly b = new THREE.Vector3();
 
-  /** `rest`: the first frame (66 floats), whose bone lengths size the capsules. */
-  constructor(skeleton: Skeleton, readonly person: number, rest: Float32Array) {
+  /** `rest`: the first frame (66 floats), whose bone lengths size the capsules. `quality`: tessellation,
+   * and shadows: cast them for the renderer's shadow map, or draw blob shadows on the floor. */
+  constructor(
+    skeleton: Skeleton,
+    readonly person: number,
+    rest: Float32Array,
+    private readonly quality: QualitySettings = QUALITY.full,
+  ) {
+    const shadowMap = quality.shadowMap;
     const colours = jointColours(skeleton, person);
     this.bonePairs = bones(skeleton);
     for (const [child, parent] of this.bonePairs) {
       const length = Math.max(1e-3, this.point(rest, child, this.a).distanceTo(this.point(rest, parent, this.b)));
       const radius = boneRadius(skeleton.joints[child]);
-      const geometry = new THREE.CapsuleGeometry(radius, length, 4, 12);
+      const geometry = new THREE.CapsuleGeometry(radius, length, ...quality.capsule);
       this.boneParts.push(this.add(geometry, colours[child]));
       this.lengths.push(length);
     }
@@ -61,15 +94,24 @@ export class Mannequin {
         .map(([c]) => boneRadius(skeleton.joints[c]));
       const r = name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
       const light = new THREE.Color(colours[j]).lerp(new THREE.Color("#ffffff"), 0.18);
-      this.jointParts.push(this.add(new THREE.SphereGeometry(r, 16, 12), "#" + light.getHexString()));
+      this.jointParts.push(this.add(new THREE.SphereGeometry(r, ...quality.sphere), "#" + light.getHexString()));
     });
+    if (!shadowMap) {
+      for (const [name, size] of BLOBS) {
+        const mat = new THREE.MeshBasicMaterial({ map: blobMap(), transparent: true, depthWrite: false, opacity: 0.5 });
+        const mesh = new THREE.Mesh(new THREE.PlaneGeometry(size, size), mat);
+        mesh.rotation.x = -Math.PI / 2;
+        mesh.renderOrder = 1;
+        this.group.add(mesh);
+        this.blobs.push({ joint: skeleton.joints.indexOf(name), mesh, mat });
+      }
+    }
   }
 
   private add(geometry: THREE.BufferGeometry, colour: string): Part {
     const mat = material(colour);
     const mesh = new THREE.Mesh(geometry, mat);
-    mesh.castShadow = true;
-    mesh.receiveShadow = true;
+    mesh.castShadow = this.quality.shadowMap;
     this.group.add(mesh);
     return { mesh, mat, colour: new THREE.Color(colour) };
   }
@@ -94,9 +136,17 @@ export class Mannequin {
     this.jointParts.forEach((part, j) => {
       this.point(joints, j, part.mesh.position);
       const contact = contacts.has(j);
-      part.mesh.scale.setScalar(contact ? 1.5 : 1);
+      part.mesh.scale.setScalar(contact ? 1.3 : 1);
       this.paint(part, contact ? CONTACT_COLOUR : null, 0.7);
     });
+    for (const { joint, mesh, mat } of this.blobs) {
+      const y = joints[3 * joint + 1];
+      mesh.position.set(joints[3 * joint], 0.003, joints[3 * joint + 2]);
+      // fainter and wider as the joint rises off the floor
+      const lift = Math.min(1, Math.max(0, (y - (joint === 0 ? 0.9 : 0.08)) / 0.8));
+      mat.opacity = 0.55 * (1 - 0.7 * lift);
+      mesh.scale.setScalar(1 + 0.5 * lift);
+    }
   }
 
   private paint(part: Part, highlight: string | null, glow: number): void {
@@ -112,7 +162,7 @@ export class Mannequin {
   }
 
   dispose(): void {
-    for (const p of [...this.boneParts, ...this.jointParts]) {
+    for (const p of [...this.boneParts, ...this.jointParts, ...this.blobs]) {
       p.mesh.geometry.dispose();
       p.mat.dispose();
     }

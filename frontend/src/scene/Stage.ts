@@ -7,6 +7,7 @@ import type { FrameBuffer } from "../playback/frameBuffer";
 import { contactJoints, penetratingBones } from "./colours";
 import { Ground } from "./Ground";
 import { Mannequin } from "./Mannequin";
+import { QUALITY, type Quality, type QualitySettings } from "./quality";
 
 const BACKGROUND = "#14161b";
 
@@ -16,22 +17,28 @@ export class Stage {
   readonly camera = new THREE.PerspectiveCamera(40, 1, 0.05, 200);
   readonly controls: OrbitControls;
   private readonly sun = new THREE.DirectionalLight("#ffffff", 2.2);
-  private readonly ground = new Ground();
+  private readonly ground: Ground;
+  private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
   private dirty = true;
 
-  constructor(readonly canvas: HTMLCanvasElement) {
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-    this.renderer.shadowMap.enabled = true;
+  constructor(
+    readonly canvas: HTMLCanvasElement,
+    readonly quality: Quality = "full",
+  ) {
+    const settings = QUALITY[quality];
+    this.settings = settings;
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: settings.antialias });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, settings.maxPixelRatio));
+    this.renderer.shadowMap.enabled = settings.shadowMap;
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
     this.renderer.toneMapping = THREE.ACESFilmicToneMapping;
     this.scene.background = new THREE.Color(BACKGROUND);
-    this.scene.fog = new THREE.Fog(BACKGROUND, 14, 40);
+    this.ground = new Ground(BACKGROUND, settings.shadowMap);
 
     this.scene.add(new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4));
     this.sun.position.set(3, 7, 5);
-    this.sun.castShadow = true;
+    this.sun.castShadow = settings.shadowMap;
     this.sun.shadow.mapSize.set(2048, 2048);
     this.sun.shadow.radius = 4;
     this.sun.shadow.bias = -0.0005;
@@ -66,7 +73,7 @@ export class Stage {
   setPeople(skeleton: Skeleton, buffer: FrameBuffer): void {
     this.clearPeople();
     for (let p = 0; p < buffer.persons; p++) {
-      const m = new Mannequin(skeleton, p, buffer.frame(p, 0));
+      const m = new Mannequin(skeleton, p, buffer.frame(p, 0), this.settings);
       this.mannequins.push(m);
       this.scene.add(m.group);
     }
@@ -84,29 +91,59 @@ export class Stage {
     return this.mannequins.length;
   }
 
-  /** Aim the camera at the pelvis paths of the received frames, from the front-right. */
-  frameView(buffer: FrameBuffer): void {
-    const box = new THREE.Box3();
-    const v = new THREE.Vector3();
+  /** Where the people are at frame t: the mean pelvis position on the floor. */
+  private centreAt(buffer: FrameBuffer, t: number, out: THREE.Vector3): THREE.Vector3 {
+    out.set(0, 0, 0);
     for (let p = 0; p < buffer.persons; p++) {
-      for (let t = 0; t < buffer.received; t++) box.expandByPoint(v.fromArray(buffer.frame(p, t), 0));
+      const f = buffer.frame(p, t);
+      out.x += f[0] / buffer.persons;
+      out.z += f[2] / buffer.persons;
     }
-    if (box.isEmpty()) return;
-    const centre = box.getCenter(new THREE.Vector3());
-    const size = box.getSize(new THREE.Vector3());
-    const span = Math.max(2.2, size.x, size.z, 1.8);
-    const distance = span / (2 * Math.tan(THREE.MathUtils.degToRad(this.camera.fov / 2))) + 1.0;
+    return out;
+  }
+
+  /** Aim the camera at the people from the front-right, far enough to see them all (their widest
+   * spread over the received frames). */
+  frameView(buffer: FrameBuffer): void {
+    if (buffer.received === 0) return;
+    let spread = 0;
+    if (buffer.persons === 2) {
+      for (let t = 0; t < buffer.received; t++) {
+        const a = buffer.frame(0, t);
+        const b = buffer.frame(1, t);
+        spread = Math.max(spread, Math.hypot(a[0] - b[0], a[2] - b[2]));
+      }
+    }
+    const span = Math.max(2.2, spread + 1.6);
+    const distance = span / (2 * Math.tan(THREE.MathUtils.degToRad(this.camera.fov / 2))) + 1.2;
+    const centre = this.centreAt(buffer, 0, new THREE.Vector3());
     this.controls.target.set(centre.x, 0.9, centre.z);
     const dir = new THREE.Vector3(0.42, 0.3, 1).normalize();
     this.camera.position.copy(this.controls.target).addScaledVector(dir, distance);
-    this.sun.position.set(centre.x + 3, 7, centre.z + 5);
-    this.sun.target.position.set(centre.x, 0, centre.z);
-    this.ground.centreOn(centre.x, centre.z);
+    this.moveLights(centre);
     this.controls.update();
     this.dirty = true;
   }
 
-  /** Pose every mannequin at frame t of the buffer. */
+  /** Keep the people in view: move the camera (and what depends on it) with their centre,
+   * keeping the user's orbit. */
+  private follow(buffer: FrameBuffer, t: number): void {
+    const centre = this.centreAt(buffer, t, new THREE.Vector3());
+    const delta = new THREE.Vector3(centre.x - this.controls.target.x, 0, centre.z - this.controls.target.z);
+    if (delta.lengthSq() < 1e-10) return;
+    this.controls.target.add(delta);
+    this.camera.position.add(delta);
+    this.moveLights(centre);
+    this.controls.update();
+  }
+
+  private moveLights(centre: THREE.Vector3): void {
+    this.sun.position.set(centre.x + 3, 7, centre.z + 5);
+    this.sun.target.position.set(centre.x, 0, centre.z);
+    this.ground.centreOn(centre.x, centre.z);
+  }
+
+  /** Pose every mannequin at frame t of the buffer and follow them with the camera. */
   pose(skeleton: Skeleton, buffer: FrameBuffer, t: number): void {
     this.mannequins.forEach((m, p) => {
       m.setPose(
@@ -115,6 +152,7 @@ export class Stage {
         penetratingBones(skeleton, buffer.penetration[t], p),
       );
     });
+    this.follow(buffer, t);
     this.dirty = true;
   }
 

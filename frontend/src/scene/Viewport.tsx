@@ -4,6 +4,7 @@
 import { useEffect, useRef } from "react";
 import { advance, frameIndex } from "../playback/timeline";
 import { FPS, frames, playhead, renderStats, useStudio } from "../store";
+import { detectQuality } from "./quality";
 import { Stage } from "./Stage";
 
 export function Viewport() {
@@ -12,7 +13,8 @@ export function Viewport() {
   useEffect(() => {
     const canvas = canvasRef.current;
     if (!canvas) return;
-    const stage = new Stage(canvas);
+    const stage = new Stage(canvas, detectQuality());
+    renderStats.quality = stage.quality;
     const fit = () => stage.resize(canvas.clientWidth, canvas.clientHeight);
     const observer = new ResizeObserver(fit);
     observer.observe(canvas);
@@ -20,7 +22,6 @@ export function Viewport() {
 
     let generation = -1; // which FrameBuffer contents the mannequins were built for
     let drawn = { frame: -1, version: -1 };
-    let framedComplete = false;
     let last = performance.now();
     let raf = 0;
 
@@ -37,15 +38,9 @@ export function Viewport() {
           stage.setPeople(skeleton, frames);
           generation = frames.generation;
           drawn = { frame: -1, version: -1 };
-          framedComplete = frames.received >= frames.total;
         }
       }
       if (stage.people > 0 && skeleton) {
-        const complete = frames.received >= frames.total;
-        if (complete && !framedComplete) {
-          stage.frameView(frames); // the whole path is known now
-          framedComplete = true;
-        }
         const clock = advance({ pos: playhead.pos, playing: s.playing }, dt, {
           fps: FPS,
           speed: s.speed,

@@ -1,27 +1,40 @@
-import { useStudio } from "../store";
+import type { PlanSegment } from "../api/types";
+import { FPS, useStudio } from "../store";
 
-/** What the planner decided: the segments of the motion. */
+function peopleCount(persons: PlanSegment["persons"]): number {
+  return Array.isArray(persons) ? persons.length : Number(persons) || 0;
+}
+
+/** What the planner decided: the segments of the motion (frames shown as seconds). */
 export function PlanPanel() {
   const plan = useStudio((s) => s.stream.plan);
-  const prompt = useStudio((s) => s.motionPrompt);
+  const segments = plan?.segments ?? [];
   return (
     <section className="panel" aria-labelledby="plan-title" data-testid="plan">
       <h2 id="plan-title">Plan</h2>
-      {prompt && <p className="plan__prompt">“{prompt}”</p>}
-      {!plan?.segments?.length ? (
-        <p className="muted small">The planner's segments appear here.</p>
+      {!segments.length ? (
+        <p className="muted small">What the planner decided appears here.</p>
       ) : (
         <ol className="plan__segments">
-          {plan.segments.map((seg, i) => (
-            <li key={i}>
-              <span>{seg.prompt}</span>
-              <span className="muted small">
-                {Number(seg.start).toFixed(1)}–{Number(seg.end).toFixed(1)} s ·{" "}
-                {seg.persons === 2 ? "2 people" : "1 person"}
-              </span>
-            </li>
-          ))}
+          {segments.map((seg, i) => {
+            const n = peopleCount(seg.persons);
+            return (
+              <li key={i}>
+                <span>{seg.prompt}</span>
+                <span className="muted small">
+                  {(seg.start / FPS).toFixed(1)}–{(seg.end / FPS).toFixed(1)} s · {n === 1 ? "1 person" : `${n} people`}
+                </span>
+              </li>
+            );
+          })}
         </ol>
+      )}
+      {plan && (plan.planner || plan.generator) && (
+        <p className="muted small plan__meta">
+          {[plan.planner && `planner: ${plan.planner}`, plan.generator && `generator: ${plan.generator}`]
+            .filter(Boolean)
+            .join(" · ")}
+        </p>
       )}
     </section>
   );

@@ -34,10 +34,10 @@ export function Timeline() {
         data-testid="play"
         onClick={toggle}
         disabled={empty}
-        aria-label={s.playing ? "Pause" : "Play"}
-        title={s.playing ? "Pause" : "Play"}
+        aria-label={s.playing && !empty ? "Pause" : "Play"}
+        title={s.playing && !empty ? "Pause" : "Play"}
       >
-        {s.playing ? "❚❚" : "▶"}
+        {s.playing && !empty ? "❚❚" : "▶"}
       </button>
       <input
         className="timeline__scrubber"
