@@ -1,4 +1,4 @@
-"""The `interplay` command: serve, generate, metrics, export, bench, data build.
+"""The `interplay` command: serve, generate, edit, metrics, export, bench, data build.
 
 Bad files or arguments exit with code 2 and a one-line message on stderr."""
 
@@ -66,7 +66,7 @@ def cmd_generate(args) -> int:
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
-    generator = load_generator(get_settings().data_dir)
+    generator = load_generator(get_settings().data_dir, get_settings().spam_dir)
     motion = generator.generate(make_request(body.prompt, body.persons, body.seconds, seed))
     if not motion.metrics:
         motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
@@ -74,6 +74,46 @@ def cmd_generate(args) -> int:
     _write(args.out, json.dumps(plain(motion.to_json()), separators=(",", ":")))
     print(f"wrote {args.out}: {len(motion.people)} person(s), {motion.frames} frames "
           f"({motion.seconds:g} s), seed {seed}", file=sys.stderr)
+    return 0
+
+
+def _frames(text: str) -> list[int]:
+    try:
+        a, b = (int(x) for x in text.split(":"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a frame range a:b") from None
+    if not 0 <= a < b:
+        raise argparse.ArgumentTypeError(f"{text!r}: need 0 ≤ a < b") from None
+    return [a, b]
+
+
+def cmd_edit(args) -> int:
+    from .agents.generator import load_generator
+    from .agents.spam_generator import EditUnavailable, resolve_edit_part
+    from .api.edits import edit_joints
+    from .api.motion_json import plain
+    from .motion.motion import Motion
+    from .settings import get_settings
+    motion = _read_motion(args.motion)
+    if not args.prompt.strip():
+        raise CliError("--prompt must not be empty")
+    if Path(args.out).is_dir():
+        raise CliError(f"{args.out} is a directory; give a file name")
+    try:
+        resolve_edit_part(args.part)
+        settings = get_settings()
+        generator = load_generator(settings.data_dir, settings.spam_dir)
+        joints, plan, metrics, seed = edit_joints(
+            generator, motion.people, motion.plan, motion.prompt, args.part, args.prompt,
+            args.frames, args.seed)
+    except (ValueError, EditUnavailable) as exc:
+        raise CliError(str(exc)) from None
+    out = Motion(people=[joints], plan=plan, metrics=metrics, prompt=motion.prompt, seed=seed)
+    _write(args.out, json.dumps(plain(out.to_json()), separators=(",", ":")))
+    edit = plan["edits"][-1]
+    print(f"wrote {args.out}: {edit['part']} frames {edit['frames'][0]}:{edit['frames'][1]}, "
+          f"seed {seed}, untouched joints moved {edit['untouched_change_cm']:.2f} cm",
+          file=sys.stderr)
     return 0
 
 
@@ -112,8 +152,17 @@ def cmd_bench(args) -> int:
     from .bench import format_table, run_bench
     if args.runs < 1:
         raise CliError("--runs must be at least 1")
-    report = run_bench(runs=args.runs, seconds=args.seconds, warmup=args.warmup)
-    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    from .bench_model import format_model_table, run_model_bench
+    from .settings import get_settings
+    report = {}
+    if args.only != "model":
+        report = run_bench(runs=args.runs, seconds=args.seconds, warmup=args.warmup)
+    if args.only != "api":
+        report["model"] = run_model_bench(get_settings().spam_dir, runs=args.runs,
+                                          warmup=args.warmup)
+    tables = ([format_table(report)] if args.only != "model" else []) + (
+        [format_model_table(report["model"])] if args.only != "api" else [])
+    print(json.dumps(report, indent=1) if args.json else "\n\n".join(tables))
     return 0
 
 
@@ -149,6 +198,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, help="motion JSON file to write")
     p.set_defaults(func=cmd_generate)
 
+    p = sub.add_parser("edit", help="re-generate a body part (or frames) of a one-person motion "
+                       "with SPAM")
+    p.add_argument("motion", help="motion JSON file to edit")
+    p.add_argument("--part", default="whole_body", help="left_arm, right_arm, left_leg, "
+                   "right_leg, whole_body (default) or a model part such as left_upper")
+    p.add_argument("--prompt", required=True, help="what the edited part does")
+    p.add_argument("--frames", type=_frames, help="a:b — edit frames a … b−1 only")
+    p.add_argument("--seed", type=int)
+    p.add_argument("--out", required=True, help="motion JSON file to write")
+    p.set_defaults(func=cmd_edit)
+
     p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
     p.add_argument("motion")
     p.add_argument("--json", action="store_true", help="machine-readable output")
@@ -161,11 +221,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--person", type=int, default=0, help="BVH: which person (default 0)")
     p.set_defaults(func=cmd_export)
 
-    p = sub.add_parser("bench", help="time jobs through the real HTTP API and WebSocket")
+    p = sub.add_parser("bench", help="time jobs through the real HTTP API and WebSocket, and "
+                       "the SPAM model on onnxruntime")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--runs", type=int, default=3, help="timed jobs per person count (default 3)")
     p.add_argument("--seconds", type=_seconds, default=6.0, help="motion length (default 6)")
     p.add_argument("--warmup", type=int, default=1, help="untimed jobs first (default 1)")
+    p.add_argument("--only", choices=("api", "model"), help="one section: jobs through the API, "
+                   "or SPAM on onnxruntime (default both)")
     p.set_defaults(func=cmd_bench)
 
     p = sub.add_parser("data", help="processed data set: `interplay data build [options]`")

@@ -7,6 +7,8 @@
     INTERPLAY_FRONTEND_DIST  the built front end served at / (default <repo>/frontend/dist)
     INTERPLAY_JOB_WORKERS    generation threads (CPU bound: 1 on a small machine)
     INTERPLAY_DATA_DIR       processed motion data the generator loads (default <repo>/models/data)
+    INTERPLAY_SPAM_DIR       SPAM's ONNX weights (default <repo>/models/weights/spam); retrieval
+                             serves when they are missing or do not load
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ class Settings(BaseSettings):
     port: int = Field(default=8000, ge=0, le=65535)
     frontend_dist: Path = REPO_ROOT / "frontend" / "dist"
     data_dir: Path | None = None                      # None: the generator's default
+    spam_dir: Path | None = None                      # None: models/weights/spam
     job_workers: int = Field(default=1, ge=1, le=16)
     max_pending_jobs: int = Field(default=16, ge=1)   # beyond this POST /api/jobs answers 429
     job_retention_s: float = 900.0                    # finished jobs stay streamable this long

@@ -12,7 +12,7 @@ SEEDS = range(4)
 
 @pytest.fixture(scope="module")
 def gen():
-    return load_generator()
+    return load_generator(use_spam=False)   # retrieval itself, not SPAM in front of it
 
 
 def _clips(plan, track=0):

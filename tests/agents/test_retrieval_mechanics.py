@@ -11,7 +11,7 @@ from interplay.motion import skeleton as sk
 
 @pytest.fixture(scope="module")
 def gen(stand_in_dir):
-    return load_generator(stand_in_dir)
+    return load_generator(stand_in_dir, use_spam=False)   # retrieval, not SPAM
 
 
 def test_prefers_train_clips_and_chains_to_the_requested_length(gen):

@@ -170,13 +170,19 @@ class Generator:
                       prompt=req.prompt, seed=plan["seed"])
 
 
-@lru_cache(maxsize=2)
-def _load(data_dir: str) -> Generator:
+@lru_cache(maxsize=4)
+def _load(data_dir: str, spam_dir: str | None, use_spam: bool) -> Generator:
     from ..text.encoder import get_encoder
 
-    return Generator(RetrievalIndex(default_clips(data_dir), get_encoder()))
+    index = RetrievalIndex(default_clips(data_dir), get_encoder())
+    if not use_spam:
+        return Generator(index)
+    from .spam_generator import with_spam
+    return with_spam(index, spam_dir)
 
 
-def load_generator(data_dir=None) -> Generator:
-    """The generator over the processed data set (models/data by default), built once."""
-    return _load(str(data_dir or DATA_DIR))
+def load_generator(data_dir=None, spam_dir=None, use_spam: bool = True) -> Generator:
+    """The generator over the processed data set (models/data by default), built once: SPAM
+    (models/weights/spam by default) for one person when its weights load, else retrieval
+    (see `spam_generator`); use_spam=False gives retrieval alone."""
+    return _load(str(data_dir or DATA_DIR), str(spam_dir) if spam_dir else None, use_spam)

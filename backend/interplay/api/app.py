@@ -20,14 +20,14 @@ from ..settings import Settings, get_settings
 from ..store import MotionRepository, make_engine
 from . import stream
 from .jobs import JobManager
-from .routes import jobs, motions, pages
+from .routes import edits, jobs, motions, pages
 
 log = logging.getLogger(__name__)
 
 
 def _load_generator(settings: Settings):
     from ..agents.generator import load_generator
-    return load_generator(settings.data_dir)
+    return load_generator(settings.data_dir, settings.spam_dir)
 
 
 def readable_errors(errors) -> str:
@@ -91,5 +91,6 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
     app.include_router(jobs.router)
     app.include_router(stream.router)
     app.include_router(motions.router)
+    app.include_router(edits.router)
     app.include_router(pages.router)  # last: it has a catch-all for top-level files
     return app

@@ -33,6 +33,38 @@ class JobCreate(BaseModel):
         return v
 
 
+class EditCreate(BaseModel):
+    model_config = ConfigDict(json_schema_extra={
+        "examples": [{"part": "left_arm", "prompt": "raises the left arm above the head",
+                      "frames": [20, 80], "seed": 3}]})
+
+    part: str | None = Field(default=None, description="What to edit: left_arm, right_arm, "
+                             "left_leg, right_leg, whole_body (default) or a model part "
+                             "(left_upper, right_upper, left_lower, right_lower).")
+    prompt: str = Field(description=f"What the edited part does, 1–{MAX_PROMPT} characters.")
+    frames: list[int] | None = Field(default=None, min_length=2, max_length=2,
+                                     description="[a, b]: edit frames a … b−1 only (default all).")
+    seed: int | None = Field(default=None, ge=0, le=MAX_SEED,
+                             description="Sampling seed; random (and stored) when omitted.")
+
+    _prompt = field_validator("prompt")(JobCreate._prompt.__func__)
+
+    @field_validator("part")
+    @classmethod
+    def _part(cls, v: str | None) -> str | None:
+        from ..agents.spam_generator import resolve_edit_part
+        if v is not None:
+            resolve_edit_part(v)   # ValueError with the valid names → 422
+        return v
+
+    @field_validator("frames")
+    @classmethod
+    def _frames(cls, v: list[int] | None) -> list[int] | None:
+        if v is not None and not 0 <= v[0] < v[1]:
+            raise ValueError(f"must be [a, b] with 0 ≤ a < b, got {v}")
+        return v
+
+
 class JobCreated(BaseModel):
     job_id: str
     motion_id: str = Field(description="Id the motion will have once done (share link /m/{id}).")

@@ -1,0 +1,39 @@
+"""POST /api/motions/{id}/edit: re-generate a body part (or frames) of a stored one-person
+motion with SPAM; the result is a new stored motion whose `parent_id` is the original."""
+
+from __future__ import annotations
+
+import logging
+
+from fastapi import APIRouter, HTTPException
+
+from ...agents.spam_generator import EditUnavailable
+from ..deps import GeneratorDep, RepoDep
+from ..edits import edit_stored
+from ..motion_json import motion_payload
+from ..schemas import ERRORS, EditCreate, MotionOut
+
+log = logging.getLogger(__name__)
+router = APIRouter(prefix="/api", tags=["motions"])
+
+
+@router.post("/motions/{motion_id}/edit", status_code=201, response_model=MotionOut,
+             responses={**ERRORS, 503: ERRORS[404]})
+def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, generator: GeneratorDep
+                ) -> dict:
+    """Edit `part` (left_arm, right_arm, left_leg, right_leg, whole_body or a model part) over
+    `frames` [a, b) from `prompt`; everything else stays as it was."""
+    parent = repo.get(motion_id)
+    if parent is None:
+        raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
+    try:
+        edited = edit_stored(repo, generator, parent, body.part, body.prompt, body.frames,
+                             body.seed)
+    except ValueError as exc:
+        raise HTTPException(422, str(exc)) from None
+    except EditUnavailable as exc:
+        raise HTTPException(503, str(exc)) from None
+    except Exception as exc:  # a model failure is reported, never a bare 500
+        log.exception("edit of motion %s failed", motion_id)
+        raise HTTPException(503, f"the edit failed: {type(exc).__name__}: {exc}") from None
+    return motion_payload(edited)

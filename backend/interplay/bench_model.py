@@ -1,0 +1,85 @@
+"""The model section of `interplay bench`: wall time of `SpamRuntime.generate` for 2, 6 and 10 s
+motions and of a one-part edit of a 6 s motion, on onnxruntime in this process (sessions built
+once, two intra-op threads), and frames generated per second. Text embeddings are cached after
+the warm-up, as in the server."""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+
+import numpy as np
+
+PROMPTS = ["a person walks forward", "a person jogs in a circle", "a person jumps, then squats"]
+EDIT_PROMPT = "the person raises the left arm above the head"
+TARGETS_MS = {"generate_6s_p50": 150.0, "edit_p50": 100.0}
+
+
+def _timed(fn, runs: int, warmup: int) -> list[float]:
+    for i in range(warmup):
+        fn(10_000 + i)
+    out = []
+    for i in range(runs):
+        t0 = time.perf_counter()
+        fn(i)
+        out.append(time.perf_counter() - t0)
+    return out
+
+
+def _row(times: list[float], frames: int) -> dict:
+    p50, p95 = (float(np.percentile(times, q)) for q in (50, 95))
+    return {"frames": frames, "runs": len(times), "p50_ms": round(p50 * 1000, 1),
+            "p95_ms": round(p95 * 1000, 1), "frames_per_s": round(frames / p50, 1)}
+
+
+def run_model_bench(weights_dir: str | Path | None = None, runs: int = 10, warmup: int = 2,
+                    seconds: tuple[float, ...] = (2.0, 6.0, 10.0), runtime=None) -> dict:
+    """{"weights", "trained", "generate": [rows per length], "edit": row, "targets_ms"}, or
+    {"error": why} when the weights do not load."""
+    from .agents.spam import DEFAULT_DIR, SpamRuntime
+    from .agents.spam_generator import placeholder_reason
+    weights_dir = Path(weights_dir or DEFAULT_DIR)
+    t0 = time.perf_counter()
+    try:
+        rt = runtime or SpamRuntime.load(weights_dir)
+    except Exception as exc:
+        return {"weights": str(weights_dir), "error": f"{type(exc).__name__}: {exc}"}
+    load_s = time.perf_counter() - t0
+    report = {"weights": str(weights_dir), "trained": placeholder_reason(weights_dir) is None,
+              "load_s": round(load_s, 3), "cpus": os.cpu_count(), "threads": 2,
+              "codes": rt.config.K, "layers": rt.config.Q, "steps": rt.config.steps,
+              "generate": [], "targets_ms": TARGETS_MS}
+    for s in seconds:
+        frames = round(s * 20)
+        times = _timed(lambda i: rt.generate(PROMPTS[i % len(PROMPTS)], frames, seed=i),
+                       runs, warmup)
+        report["generate"].append({"seconds": s, **_row(times, frames)})
+    motion = rt.generate(PROMPTS[0], 120, seed=0)
+    last = {}
+
+    def edit(i):
+        last["edit"] = rt.edit(motion, ["left_upper"], EDIT_PROMPT, seed=i, context=PROMPTS[0])
+    times = _timed(edit, runs, warmup)
+    report["edit"] = {"seconds": 6.0, "part": "left_upper", **_row(times, 120),
+                      "untouched_change_cm": round(last["edit"].untouched_change_cm, 3)}
+    return report
+
+
+def format_model_table(report: dict) -> str:
+    if "error" in report:
+        return f"model: SPAM weights in {report['weights']} did not load: {report['error']}"
+    state = "trained" if report["trained"] else "UNTRAINED placeholder"
+    lines = [f"SPAM on onnxruntime ({report['cpus']} CPUs, {report['threads']} threads, "
+             f"{state} weights, K={report['codes']} Q={report['layers']}, "
+             f"{report['steps']} steps, load {report['load_s']:.2f} s)",
+             f"{'task':<16}  {'frames':>6}  {'runs':>4}  {'p50':>8}  {'p95':>8}  {'frames/s':>8}"]
+    rows = [(f"generate {r['seconds']:g} s", r) for r in report["generate"]]
+    rows.append((f"edit 1 part {report['edit']['seconds']:g} s", report["edit"]))
+    for name, r in rows:
+        lines.append(f"{name:<16}  {r['frames']:>6}  {r['runs']:>4}  {r['p50_ms']:>5.0f} ms  "
+                     f"{r['p95_ms']:>5.0f} ms  {r['frames_per_s']:>8.0f}")
+    t = report["targets_ms"]
+    lines.append(f"targets: 6 s generate p50 ≤ {t['generate_6s_p50']:.0f} ms, "
+                 f"edit p50 ≤ {t['edit_p50']:.0f} ms")
+    return "\n".join(lines)
