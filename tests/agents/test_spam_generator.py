@@ -14,8 +14,9 @@ from synthetic_motion import fk_motion, stand_in_clips
 from interplay.agents.generator import CHUNK, Request
 from interplay.agents.retrieval import RetrievalIndex
 from interplay.agents.spam import DEFAULT_DIR
+from interplay.agents.spam import part_texts
 from interplay.agents.spam_generator import (EditUnavailable, placeholder_reason,
-                                             resolve_edit_part, with_spam)
+                                             resolve_edit_part, segment_texts, with_spam)
 from interplay.motion import skeleton as sk
 
 
@@ -55,7 +56,7 @@ def test_one_person_uses_spam_and_streams_exact_frames(spam_gen):
 
 def test_two_people_fall_back_to_retrieval_with_a_reason(spam_gen):
     plan = spam_gen.plan(Request("two people dance salsa", persons=2, seconds=4, seed=1))
-    assert plan["generator"] == "retrieval" and "one person" in plan["fallback_reason"]
+    assert plan["generator"] == "retrieval" and "one person" in plan["generator_reason"]
 
 
 @pytest.mark.parametrize("case", ["missing", "broken", "placeholder"])
@@ -71,7 +72,7 @@ def test_bad_weights_fall_back_to_retrieval(case, index, tmp_path):
     assert gen.spam is None
     req = Request("a person walks forward", persons=1, seconds=3, seed=2)
     plan = gen.plan(req)
-    assert plan["generator"] == "retrieval" and str(d) in plan["fallback_reason"]
+    assert plan["generator"] == "retrieval" and str(d) in plan["generator_reason"]
     assert gen.generate(req).frames == 60
     with pytest.raises(EditUnavailable, match="SPAM"):
         gen.edit(fk_motion(40, "walk")[0], "left_arm", "waves", seed=0)
@@ -95,3 +96,12 @@ def test_edit_through_the_generator(spam_gen):
         resolve_edit_part("tail")
     with pytest.raises(ValueError):
         spam_gen.edit(joints, "left_arm", "   ", seed=0)
+
+
+def test_planned_part_edits_become_part_prompts():
+    seg = {"prompt": "a person walks while waving", "base": "a person walks",
+           "edits": {"left_arm": None, "right_arm": "waves the right hand", "left_leg": "",
+                     "right_leg": None}}
+    assert part_texts(segment_texts(seg)) == ["a person walks", "waves the right hand",
+                                              "a person walks", "a person walks"]
+    assert segment_texts({"prompt": "a person jumps", "edits": {}}) == "a person jumps"
