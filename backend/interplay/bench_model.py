@@ -48,6 +48,7 @@ def run_model_bench(weights_dir: str | Path | None = None, runs: int = 10, warmu
     load_s = time.perf_counter() - t0
     report = {"weights": str(weights_dir), "trained": placeholder_reason(weights_dir) is None,
               "load_s": round(load_s, 3), "cpus": os.cpu_count(), "threads": 2,
+              "load_avg_1m": round(os.getloadavg()[0], 2),   # other work on the shared CPUs
               "codes": rt.config.K, "layers": rt.config.Q, "steps": rt.config.steps,
               "generate": [], "targets_ms": TARGETS_MS}
     for s in seconds:
@@ -63,6 +64,7 @@ def run_model_bench(weights_dir: str | Path | None = None, runs: int = 10, warmu
     times = _timed(edit, runs, warmup)
     report["edit"] = {"seconds": 6.0, "part": "left_upper", **_row(times, 120),
                       "untouched_change_cm": round(last["edit"].untouched_change_cm, 3)}
+    report["load_avg_1m_after"] = round(os.getloadavg()[0], 2)
     return report
 
 
@@ -72,7 +74,8 @@ def format_model_table(report: dict) -> str:
     state = "trained" if report["trained"] else "UNTRAINED placeholder"
     lines = [f"SPAM on onnxruntime ({report['cpus']} CPUs, {report['threads']} threads, "
              f"{state} weights, K={report['codes']} Q={report['layers']}, "
-             f"{report['steps']} steps, load {report['load_s']:.2f} s)",
+             f"{report['steps']} steps, sessions {report['load_s']:.2f} s; "
+             f"load average {report['load_avg_1m']:g} → {report['load_avg_1m_after']:g})",
              f"{'task':<16}  {'frames':>6}  {'runs':>4}  {'p50':>8}  {'p95':>8}  {'frames/s':>8}"]
     rows = [(f"generate {r['seconds']:g} s", r) for r in report["generate"]]
     rows.append((f"edit 1 part {report['edit']['seconds']:g} s", report["edit"]))
