@@ -7,6 +7,14 @@ test("a person walks forward: frames stream in and play on a non-blank canvas", 
   const canvas = page.getByTestId("viewport");
   const empty = await shot(canvas, "a-empty-scene", info);
 
+  // record what the progress indicator says while the stream runs (it may be brief)
+  await page.evaluate(() => {
+    const seen: string[] = ((window as unknown as { __progress: string[] }).__progress = []);
+    new MutationObserver(() => {
+      const text = document.querySelector('[data-testid="progress"]')?.textContent;
+      if (text && seen[seen.length - 1] !== text) seen.push(text);
+    }).observe(document.body, { subtree: true, childList: true, characterData: true });
+  });
   await startGeneration(page, "a person walks forward", 1, seconds);
   await page.waitForFunction(() => window.__interplay.framesReceived > 0);
   const streaming = await hook(page);
@@ -22,6 +30,9 @@ test("a person walks forward: frames stream in and play on a non-blank canvas", 
   await expect(page.getByTestId("frame-counter")).toContainText(`/ ${seconds * 20}`);
   await expect(page.getByTestId("frame-counter")).toContainText(`${seconds.toFixed(2)} s`);
   await expect(page).toHaveURL(new RegExp(`/m/${done.motionId}$`));
+  const progress = await page.evaluate(() => (window as unknown as { __progress: string[] }).__progress);
+  expect(progress.some((t) => new RegExp(`\\d+ / ${seconds * 20} frames`).test(t)), progress.join(" | ")).toBe(true);
+  await expect(page.getByTestId("progress")).toHaveCount(0); // gone when done
 
   // the mannequin is drawn: the canvas differs from the empty scene
   await showFrame(page, 30);
@@ -71,4 +82,11 @@ test("an empty prompt shows a readable error", async ({ page }, info) => {
   await expect(banner).not.toContainText(/HTTP|object Object|undefined/);
   expect((await hook(page)).phase).toBe("idle");
   await shot(page, "e-empty-prompt", info);
+
+  // an out-of-range duration gets the API's message too
+  await page.getByTestId("prompt").fill("a person walks forward");
+  await page.getByTestId("seconds").fill("25");
+  await page.getByTestId("generate").click();
+  await expect(banner).toContainText(/seconds/i);
+  await expect(banner).toContainText("20");
 });

@@ -2,7 +2,8 @@ import { expect, test } from "@playwright/test";
 import { readFileSync } from "node:fs";
 import { hook, openStudio, shot, startGeneration, waitDone } from "./studio";
 
-test("the share link opens the same motion in a fresh browser context", async ({ page, browser }, info) => {
+test("the share link opens the same motion in a fresh browser context", async ({ page, browser, context }, info) => {
+  await context.grantPermissions(["clipboard-read", "clipboard-write"]);
   await openStudio(page);
   await startGeneration(page, "a person waves with the right hand", 1, 2);
   const done = await waitDone(page);
@@ -10,6 +11,7 @@ test("the share link opens the same motion in a fresh browser context", async ({
   await page.getByTestId("share").click();
   const url = await page.getByTestId("share-url").inputValue();
   expect(url).toMatch(new RegExp(`/m/${done.motionId}$`));
+  expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(url);
   expect(done.motionId!.length).toBeGreaterThanOrEqual(22); // ≥ 128 bits, URL-safe base64
 
   const fresh = await browser.newContext();

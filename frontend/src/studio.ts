@@ -94,8 +94,13 @@ export async function openMotion(id: string): Promise<void> {
   }
 }
 
-/** Fetch the skeleton, then open the motion named by the URL (/m/{id}) if any. */
+let started = false;
+
+/** Fetch the skeleton, then open the motion named by the URL (/m/{id}) if any. Once per page
+ * (React's StrictMode runs effects twice in development). */
 export async function startStudio(): Promise<void> {
+  if (started) return;
+  started = true;
   window.addEventListener("popstate", () => {
     const id = motionIdFromPath(window.location.pathname);
     if (id && id !== useStudio.getState().motionId) void openMotion(id);

@@ -26,7 +26,7 @@ export function PromptBar() {
   };
 
   return (
-    <form className="prompt-bar" onSubmit={submit} aria-label="Generate a motion">
+    <form className="prompt-bar" onSubmit={submit} aria-label="Generate a motion" noValidate>
       <input
         className="prompt-bar__input"
         data-testid="prompt"
