@@ -35,7 +35,8 @@ export interface Plan {
   [key: string]: unknown;
 }
 
-export type Metrics = Record<string, number>;
+/** Clip metrics; non-finite values arrive as null. */
+export type Metrics = Record<string, number | null>;
 
 /** Per-frame highlights: contacts are [person, joint], penetration is [person, part]. */
 export interface Highlights {

@@ -26,6 +26,18 @@ describe("FrameBuffer", () => {
     expect(b.frame(0, 7)[2]).toBeCloseTo(rest[0][2] + 7 / 20);
   });
 
+  it("replaces frames when a chunk repeats a start (refinement)", () => {
+    const b = new FrameBuffer();
+    b.reset(1);
+    b.setFrames(0, [walkFrames(10, 0, 1)], 10);
+    const v = b.version;
+    b.setFrames(5, [walkFrames(2, 3, 1, 5)], 10);
+    expect(b.version).toBeGreaterThan(v);
+    expect([b.total, b.received]).toEqual([10, 10]);
+    expect(b.frame(0, 5)[0]).toBeCloseTo(rest[0][0] + 3);
+    expect(b.frame(0, 7)[0]).toBeCloseTo(rest[0][0]);
+  });
+
   it("rejects chunks of the wrong shape", () => {
     const b = new FrameBuffer();
     b.reset(2);
