@@ -195,6 +195,9 @@ def test_generator_that_cannot_load_gives_503_not_500(settings, monkeypatch):
     with TestClient(create_app(settings)) as client:
         r = client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 2})
         assert r.status_code == 503 and "weights missing" in r.json()["detail"]
+        # Bad input is still told apart from the missing generator.
+        r = client.post("/api/jobs", json={"prompt": "", "seconds": 2})
+        assert r.status_code == 422 and "prompt" in r.json()["detail"]
         assert client.get("/api/skeleton").status_code == 200
 
 

@@ -34,11 +34,17 @@ def two_person(client):
 
 @pytest.mark.parametrize("motion_id", [MISSING, *MALFORMED])
 def test_unknown_or_malformed_ids_are_404_json(client, motion_id):
-    for url in (f"/api/motions/{motion_id}", f"/api/motions/{motion_id}/export?format=bvh",
-                f"/m/{motion_id}"):
+    for url in (f"/api/motions/{motion_id}", f"/api/motions/{motion_id}/export?format=bvh"):
         r = client.get(url)
         assert r.status_code == 404, (url, r.text)
         assert "no motion" in r.json()["detail"] or r.json()["detail"] == "not found"
+
+
+@pytest.mark.parametrize("motion_id", [MISSING, MALFORMED[0]])
+def test_a_bad_share_link_gets_the_page_with_a_404_status(client, motion_id):
+    # The page then asks the API and shows its readable message (not raw JSON).
+    r = client.get(f"/m/{motion_id}")
+    assert r.status_code == 404 and r.headers["content-type"].startswith("text/html")
 
 
 def test_json_export_round_trips_through_motion(client, two_person):

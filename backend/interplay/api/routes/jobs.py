@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from fastapi import APIRouter, HTTPException
+from fastapi import APIRouter, HTTPException, Request
 
-from ..deps import GeneratorDep, JobsDep
+from ..deps import JobsDep, generator as loaded_generator
 from ..jobs import JobSpec, random_seed
 from ..schemas import ERRORS, JobCreate, JobCreated, JobStatus
 
@@ -17,9 +17,12 @@ def stream_path(job_id: str) -> str:
 
 @router.post("", status_code=201, response_model=JobCreated,
              responses={**ERRORS, 429: ERRORS[404], 503: ERRORS[404]})
-def create_job(body: JobCreate, jobs: JobsDep, generator: GeneratorDep) -> JobCreated:
+def create_job(body: JobCreate, jobs: JobsDep, request: Request) -> JobCreated:
     """Start generating; follow the WebSocket at `stream` for plan, frames, highlights,
     metrics and done events. The motion is stored under `motion_id` when done."""
+    # Looked up here, not as a dependency: dependencies run before the body is validated, and
+    # bad input must get its 422 even while the generator is unavailable (503).
+    generator = loaded_generator(request)
     seed = body.seed if body.seed is not None else random_seed()
     spec = JobSpec(prompt=body.prompt, persons=body.persons, seconds=body.seconds, seed=seed)
     try:

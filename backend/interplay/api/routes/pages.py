@@ -19,12 +19,13 @@ repository (it builds <code>frontend/dist</code> and starts the server), then re
 <p>The API is up: see <a href="/docs">/docs</a>.</p></body></html>"""
 
 
-def _index(dist: Path):
+def _index(dist: Path, status_code: int = 200):
     index = dist / "index.html"
     if not index.is_file():
-        return HTMLResponse(NO_BUILD)
+        return HTMLResponse(NO_BUILD, status_code=status_code)
     # The page is tiny and names hashed assets: always revalidate it.
-    return FileResponse(index, media_type="text/html", headers={"Cache-Control": "no-cache"})
+    return FileResponse(index, media_type="text/html", status_code=status_code,
+                        headers={"Cache-Control": "no-cache"})
 
 
 def _file_under(root: Path, rel: str) -> Path:
@@ -46,9 +47,9 @@ def index(settings: SettingsDep):
 
 @router.get("/m/{motion_id}")
 def motion_page(motion_id: str, settings: SettingsDep, repo: RepoDep):
-    if not repo.exists(motion_id):
-        raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
-    return _index(settings.frontend_dist)
+    # A bad share link still gets the page (with a 404 status): it asks the API for the motion
+    # and shows the API's readable message, instead of leaving a person with raw JSON.
+    return _index(settings.frontend_dist, 200 if repo.exists(motion_id) else 404)
 
 
 @router.get("/assets/{path:path}")
