@@ -114,3 +114,18 @@ def test_retrieval_only_generator_answers_503(fake_client):
                                             seconds=1.0).id
     r = fake_client.post(f"/api/motions/{mid}/edit", json={"part": "left_arm", "prompt": "x"})
     assert r.status_code == 503 and "edit" in r.json()["detail"]
+
+
+def test_bad_input_gets_its_4xx_while_the_generator_is_unavailable(settings, monkeypatch):
+    import interplay.api.app as app_module
+
+    def no_generator(_settings):
+        raise FileNotFoundError("no weights here")
+    monkeypatch.setattr(app_module, "_load_generator", no_generator)
+    with TestClient(create_app(settings)) as c:
+        mid = c.app.state.repo.create(prompt="p", people=[np.zeros((20, 22, 3))], seconds=1.0).id
+        assert c.post(f"/api/motions/{mid}/edit", json={"part": "tail", "prompt": "x"}
+                      ).status_code == 422
+        assert c.post("/api/motions/nope/edit", json={"prompt": "x"}).status_code == 404
+        r = c.post(f"/api/motions/{mid}/edit", json={"prompt": "x"})
+        assert r.status_code == 503 and "no weights here" in r.json()["detail"]

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import logging
 
-from fastapi import APIRouter, HTTPException
+from fastapi import APIRouter, HTTPException, Request
 
 from ...agents.spam_generator import EditUnavailable
-from ..deps import GeneratorDep, RepoDep
+from ..deps import RepoDep, generator as loaded_generator
 from ..edits import edit_stored
 from ..motion_json import motion_payload
 from ..schemas import ERRORS, EditCreate, MotionOut
@@ -19,13 +19,15 @@ router = APIRouter(prefix="/api", tags=["motions"])
 
 @router.post("/motions/{motion_id}/edit", status_code=201, response_model=MotionOut,
              responses={**ERRORS, 503: ERRORS[404]})
-def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, generator: GeneratorDep
-                ) -> dict:
+def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, request: Request) -> dict:
     """Edit `part` (left_arm, right_arm, left_leg, right_leg, whole_body or a model part) over
     `frames` [a, b) from `prompt`; everything else stays as it was."""
     parent = repo.get(motion_id)
     if parent is None:
         raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
+    # Looked up here, not as a dependency, so bad input and ids get their 422/404 even while
+    # the generator is unavailable (503), as for jobs.
+    generator = loaded_generator(request)
     try:
         edited = edit_stored(repo, generator, parent, body.part, body.prompt, body.frames,
                              body.seed)
