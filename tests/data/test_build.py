@@ -17,13 +17,13 @@ RAW = Path(__file__).resolve().parents[1] / "fixtures" / "raw"
 def built(tmp_path_factory):
     out = tmp_path_factory.mktemp("data")
     build.SKIPPED.clear()
-    assert build.main(["--source", str(RAW), "--out", str(out)]) == 0
+    assert build.main(["--source", str(RAW), "--out", str(out), "--composed", "2"]) == 0
     return out, load_clips(out)
 
 
 def test_build_reads_every_source_and_leaves_out_broken_trials(built):
     out, clips = built
-    assert {c.source for c in clips} == {"cmu-bvh", "cmu-salsa", "hdm05", "cmu-8action"}
+    assert {c.source for c in clips} - {"composed"} == {"cmu-bvh", "cmu-salsa", "hdm05", "cmu-8action"}
     assert "cmu:07_12" not in {c.id for c in clips}  # broken root track
     assert any("07_12" in f for f, _ in build.SKIPPED)
     salsa = [c for c in clips if c.source == "cmu-salsa"]
@@ -43,6 +43,19 @@ def test_build_labels_and_captions(built):
     assert by_id["salsa:01"].prompt == "two people dance salsa"
     assert all(c.prompt and c.captions for c in clips)
     assert all(cap.part in ("body",) + sk.PART_NAMES for c in clips for cap in c.captions)
+
+
+def test_build_composes_synthetic_pairs_from_bases_of_the_same_split(built):
+    out, clips = built
+    real = {c.id: c for c in clips if not c.synthetic}
+    composed = [c for c in clips if c.source == "composed"]
+    # The fixtures' train split has quiet standing and walks; val/test may have none (skipped).
+    assert {c.meta["kind"] for c in composed if c.split == "train"} >= {"handshake", "walk_side_by_side"}
+    for c in composed:
+        assert c.synthetic and len(c.people) == 2 and c.frames == 80 and c.captions
+        assert all(real[b["clip"]].split == c.split for b in c.meta["bases"])
+    card = (out / "README.md").read_text()
+    assert "Composed two-person clips" in card and f"{len(composed)} synthetic clips" in card
 
 
 def test_stratified_split_is_by_trial_and_stable():

@@ -23,6 +23,11 @@ DEFAULT_SOURCE = REPO.parent / "shared" / "data"
 # HDM05's actor "mm" is held out entirely as the test set: unseen performer, every class.
 HDM05_TEST_ACTOR = "mm"
 SPLIT_SHARES = {"test": 0.15, "val": 0.10}
+# Composed two-person clips per kind and split (interplay.motion.compose), 4 s each; a split's
+# pairs are composed only from that split's real single-person clips.
+COMPOSED_PER_KIND = {"train": 24, "val": 4, "test": 4}
+COMPOSED_SECONDS = 4.0
+COMPOSE_NOTES: list[str] = []
 # Raw files left out of the set, with the reasons (broken root tracks …); listed in the card.
 SKIPPED: list[tuple[str, list[str]]] = []
 
@@ -158,6 +163,28 @@ def add_captions(clips: list[Clip]) -> None:
         c.captions = caps
 
 
+def build_composed(clips: list[Clip], per_kind: dict[str, int] = COMPOSED_PER_KIND) -> list[Clip]:
+    """Synthetic two-person clips composed from the real clips (after their splits are set):
+    train pairs from train bases only, val/test pairs from val/test bases. Kinds a split has no
+    bases for are skipped and noted in the card."""
+    from ..motion.compose import KINDS, compose_set, pool_of
+
+    COMPOSE_NOTES.clear()
+    out: list[Clip] = []
+    for split, n in per_kind.items():
+        pool = pool_of(clips, split)
+        COMPOSE_NOTES.append(f"{split} bases: {len(pool.stand)} quiet standing stretches from "
+                             f"{len({b.clip.id for b in pool.stand})} clips, {len(pool.walk)} level walks")
+        got = compose_set(n, 0, clips=clips, split=split, seconds=COMPOSED_SECONDS)
+        missing = [k for k in KINDS if k not in {c.meta["kind"] for c in got}]
+        if missing:
+            COMPOSE_NOTES.append(f"{split}: no composed {', '.join(missing)} (the {split} split has no "
+                                 f"{'quiet standing or level walk' if len(missing) == len(KINDS) else 'suitable'}"
+                                 " real bases for them)")
+        out.extend(got)
+    return out
+
+
 BUILDERS = {"cmu-bvh": build_cmu_bvh, "cmu-salsa": build_salsa, "hdm05": build_hdm05,
             "cmu-8action": build_cmu_8action}
 
@@ -166,7 +193,11 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="interplay data build", description=__doc__)
     ap.add_argument("--source", type=Path, default=DEFAULT_SOURCE, help="raw data folder (../shared/data)")
     ap.add_argument("--out", type=Path, default=DATA_DIR, help="output folder (models/data)")
-    ap.add_argument("--only", nargs="*", choices=sorted(BUILDERS), help="build only these sources")
+    ap.add_argument("--only", nargs="*", choices=sorted(BUILDERS) + ["composed"],
+                    help="build only these sources")
+    ap.add_argument("--composed", type=int, default=None, metavar="N",
+                    help="composed pairs per kind in train (default "
+                         f"{COMPOSED_PER_KIND['train']}; val/test keep at most their defaults)")
     args = ap.parse_args(argv)
     if not args.source.is_dir():
         print(f"error: raw data folder {args.source} not found (pass --source)", file=sys.stderr)
@@ -180,11 +211,19 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{name:12s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
         clips.extend(got)
     assign_splits(clips)
+    if not args.only or "composed" in args.only:
+        t0 = time.time()
+        per_kind = COMPOSED_PER_KIND if args.composed is None else {
+            split: min(n, args.composed) if split != "train" else args.composed
+            for split, n in COMPOSED_PER_KIND.items()}
+        got = build_composed(clips, per_kind)
+        print(f"{'composed':12s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
+        clips.extend(got)
     t0 = time.time()
     add_captions(clips)
     print(f"captions     {sum(len(c.captions) for c in clips):4d}       {time.time() - t0:6.1f} s")
     save_clips(clips, args.out)
-    write_card(clips, args.out, skipped=SKIPPED)
+    write_card(clips, args.out, skipped=SKIPPED, composed_notes=COMPOSE_NOTES)
     print(f"wrote {len(clips)} clips to {args.out}")
     return 0
 

@@ -13,6 +13,8 @@ SOURCES = {
     "cmu-salsa": ("CMU subjects 60 (lead) + 61 (follow), synchronised salsa pairs", "CMU terms"),
     "hdm05": ("HDM05 pre-cut clips, 11 classes, 5 actors, Acclaim ASF/AMC", "CC BY-SA 3.0"),
     "cmu-8action": ("CMU 8-action motion-prediction set (exp-map text)", "CMU terms"),
+    "composed": ("synthetic two-person clips composed from the real single-person clips above, "
+                 "contact solved with IK", "its bases' (per clip)"),
 }
 
 LICENCES = """\
@@ -32,7 +34,32 @@ def _hours(frames: int) -> float:
     return frames / FPS / 3600
 
 
-def write_card(clips: list[Clip], out_dir: Path, skipped: list[tuple[str, list[str]]] = ()) -> None:
+def _composed_lines(clips: list[Clip], notes=()) -> list[str]:
+    """The composed pairs: how they are made, how many of each kind per split."""
+    composed = [c for c in clips if c.source == "composed"]
+    lines = ["", "### Composed two-person clips (`composed.npz`)", "",
+             "Built by `interplay.motion.compose` after the real sources: two real single-person motions of",
+             "the same split (train pairs only from train clips, val/test pairs from val/test clips) —",
+             "quiet standing stretches (played back and forth with a cosine time warp) or level walks",
+             "(looped on their gait cycle, the second time-warped to the first's speed) — are placed",
+             "facing each other or side by side with their trunks, heads and legs apart, and the contact",
+             "arms follow two-bone IK (`interplay.motion.ik`) to the partner's hand, back or chest with",
+             "eased weights over a window; every other joint stays as captured. `meta` holds the kind,",
+             "the contact window and hands, the placement and the bases. Each clip's `licence` is its",
+             "bases' (CC BY-SA 3.0 when an HDM05 clip is one of them). They are marked `synthetic: true`."]
+    if composed:
+        kinds = sorted({c.meta["kind"] for c in composed})
+        count = Counter((c.meta["kind"], c.split) for c in composed)
+        lines += ["", "| kind | train | val | test |", "|---|---|---|---|"]
+        lines += [f"| {k} | {count[k, 'train']} | {count[k, 'val']} | {count[k, 'test']} |" for k in kinds]
+    else:
+        lines += ["", "None in this build: no split had quiet standing or level walking real clips."]
+    lines += [f"- {n}" for n in notes]
+    return lines
+
+
+def write_card(clips: list[Clip], out_dir: Path, skipped: list[tuple[str, list[str]]] = (),
+               composed_notes=()) -> None:
     by_source: dict[str, list[Clip]] = defaultdict(list)
     for c in clips:
         by_source[c.source].append(c)
@@ -97,5 +124,6 @@ def write_card(clips: list[Clip], out_dir: Path, skipped: list[tuple[str, list[s
     lines += [f"- {t} ({n})" for t, n in texts.most_common(25)]
     lines += ["", "## Synthetic data", "",
               f"{sum(c.synthetic for c in clips)} synthetic clips (composed pairs are marked `synthetic: true`"
-              " and kept out of the evaluation's real reference set).", "", LICENCES]
+              " and kept out of the evaluation's real reference set).", *_composed_lines(clips, composed_notes),
+              "", LICENCES]
     (out_dir / "README.md").write_text("\n".join(lines))
