@@ -117,6 +117,35 @@ def cmd_edit(args) -> int:
     return 0
 
 
+def cmd_plan(args) -> int:
+    from .agents.planner import plan_json
+    try:
+        plan = plan_json(args.prompt, args.persons, args.seconds)
+    except ValueError as exc:
+        raise CliError(str(exc)) from None
+    if args.json:
+        print(json.dumps(plan, indent=1, ensure_ascii=False))
+        return 0
+    print(f"planner: {plan['planner']} · {len(plan['segments'])} segment(s) · {plan['seconds']:g} s")
+    if plan.get("fallback_reason"):
+        print(f"fallback: {plan['fallback_reason']}")
+    for s in plan["segments"]:
+        print(f"{s['index']:>2}  {s['start'] / 20:5.2f}–{s['end'] / 20:5.2f} s  {s['persons']}  "
+              f"{s['prompt']}" + (f"  (×{s['repeat']})" if s["repeat"] > 1 else ""))
+        print(f"      base: {s['base']}")
+        for part, text in (s["edits"] or {}).items():
+            if text:
+                print(f"      {part}: {text}")
+        if s["trajectory"]:
+            t = {k: v for k, v in s["trajectory"].items() if v is not None and k != "text"}
+            print(f"      trajectory: {t}")
+        for who, text in (s["roles"] or {}).items():
+            print(f"      person {who}: {text}")
+    for reason in plan["reasons"]:
+        print(f"  · {reason}")
+    return 0
+
+
 def cmd_metrics(args) -> int:
     from .api.motion_json import plain
     from .motion.metrics import clip_metrics
@@ -208,6 +237,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--seed", type=int)
     p.add_argument("--out", required=True, help="motion JSON file to write")
     p.set_defaults(func=cmd_edit)
+
+    p = sub.add_parser("plan", help="the planner's plan for a prompt (segments, part edits, "
+                       "trajectories, durations) without generating")
+    p.add_argument("--prompt", required=True)
+    p.add_argument("--persons", type=int, choices=(1, 2), default=1)
+    p.add_argument("--seconds", type=_seconds, help="total length (default: estimated)")
+    p.add_argument("--json", action="store_true", help="the plan JSON the API streams")
+    p.set_defaults(func=cmd_plan)
 
     p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
     p.add_argument("motion")

@@ -9,6 +9,10 @@
     INTERPLAY_DATA_DIR       processed motion data the generator loads (default <repo>/models/data)
     INTERPLAY_SPAM_DIR       SPAM's ONNX weights (default <repo>/models/weights/spam); retrieval
                              serves when they are missing or do not load
+    INTERPLAY_LLM_BASE_URL   optional OpenAI-compatible endpoint for the planner (e.g.
+                             http://localhost:11434/v1); with INTERPLAY_LLM_MODEL set the planner
+                             asks it and falls back to the embedded planner on any failure
+    INTERPLAY_LLM_MODEL / _API_KEY / _TIMEOUT_S   its model name, bearer key, timeout (20 s)
 """
 
 from __future__ import annotations
@@ -16,7 +20,7 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
-from pydantic import AliasChoices, Field
+from pydantic import AliasChoices, Field, SecretStr
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -36,6 +40,10 @@ class Settings(BaseSettings):
     job_workers: int = Field(default=1, ge=1, le=16)
     max_pending_jobs: int = Field(default=16, ge=1)   # beyond this POST /api/jobs answers 429
     job_retention_s: float = 900.0                    # finished jobs stay streamable this long
+    llm_base_url: str | None = None                   # planner LLM (OpenAI-compatible), optional
+    llm_model: str | None = None
+    llm_api_key: SecretStr | None = None
+    llm_timeout_s: float = Field(default=20.0, gt=0, le=600)
 
     @property
     def db_url(self) -> str:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from interplay.agents.planner_basic import basic_plan
+from interplay.agents.planner import plan_json
 from interplay.api.app import create_app
 from interplay.motion.skeleton import FPS, rest_joints
 from interplay.settings import Settings
@@ -21,7 +21,7 @@ class FakeGenerator:
         self.chunk, self.fail_after = chunk, fail_after
 
     def plan(self, req) -> dict:
-        return basic_plan(req.prompt, req.persons, req.seconds)
+        return plan_json(req.prompt, req.persons, req.seconds)
 
     def stream(self, req, plan):
         total = round(req.seconds * FPS)

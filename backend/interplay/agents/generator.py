@@ -26,7 +26,7 @@ import numpy as np
 from ..motion.clip import DATA_DIR, default_clips
 from ..motion.motion import Motion
 from ..motion.skeleton import FPS, PELVIS
-from .planner_basic import basic_plan
+from .planner import plan_json
 from .retrieval import RetrievalIndex
 from .stitch import Stitcher
 
@@ -99,8 +99,8 @@ class Generator:
                 "arrangement": "side_by_side" if travel > TRAVEL else "facing"}
 
     def plan(self, req: Request) -> dict:
-        """The basic plan plus, per segment, the captures chosen for it and the seed used."""
-        plan = basic_plan(req.prompt, req.persons, req.seconds)
+        """The planner's plan plus, per segment, the captures chosen for it and the seed used."""
+        plan = plan_json(req.prompt, req.persons, req.seconds)
         seed = req.seed if req.seed is not None else secrets.randbelow(2**31)
         after = None
         for seg in plan["segments"]:
