@@ -170,6 +170,9 @@ def test_two_people_who_does_what():
     other = _plan("they walk forward together, then one of them sits down while the other waves", 2)
     assert other.segments[1].persons == [0, 1]
     assert "sits down" in other.segments[1].roles["1"] and "waves" in other.segments[1].roles["0"]
+    hi5 = _plan("two people high five", 2)          # unknown verb → the data's own phrase
+    assert hi5.segments[0].prompt == "two people high-five" and hi5.segments[0].persons == [0, 1]
+    assert any(r.startswith("similarity:") for r in hi5.reasons)
     salsa = _plan("two people dance salsa", 2, 6)
     assert [s.prompt for s in salsa.segments] == ["two people dance salsa"]
     assert _plan("a person waves").segments[0].roles is None

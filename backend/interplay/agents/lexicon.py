@@ -136,7 +136,6 @@ LEXICON: tuple[Entry, ...] = (
     E("hula hoop", r"hula[\s-]?hoop(?:ing)?", "circles the hips with both arms raised"),
     E("zombie walk", r"zombie\s+walk", "walks slowly with both arms stretched forward"),
     E("proposal", r"(?:marriage\s+)?proposal(?:\s+pose)?", "kneels down on the right knee"),
-    E("handshake", r"shak(?:e|es|ing)\s+hands|handshake", "shakes hands with the right hand"),
     E("obstacle dodging", r"(?:try(?:ing|ies)?\s+to\s+)?(?:avoid|dodge)(?:s|ing)?\s+(?:the\s+)?"
       r"(?:[\w-]+\s+)?obstacles?|obstacle\s+dodging", "dodges from side to side in a zigzag"),
 )

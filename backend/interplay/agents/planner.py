@@ -3,7 +3,7 @@ optional trajectory (CoMA's task planner, section 3 and appendix C), offline by 
 
     p = plan("two people shake hands, then one walks away in a circle", persons=2, seconds=8)
     [s.prompt for s in p.segments]
-      → ["two people shake hands with the right hand",
+      → ["two people shake hands",
          "one person walks away in a circle while the other stands still"]
     p.segments[1].persons == [1]; p.segments[1].trajectory.shape == "circle"
 
@@ -150,12 +150,16 @@ def _resolve(action: Action, clause: str, posture: str, last_parts, vocab, reaso
                 reasons.append(f"similarity: '{action.text}' → '{target}' (nearest {match.source} "
                                f"phrase '{match.phrase}', cosine {match.score:.2f})")
                 new = decompose(target, posture, last_parts)
-                if new.known:
-                    new.subject = action.subject
-                    return new
+                if not new.known:                # a data phrase with a verb we lack ("high-five")
+                    new.text = split_subject(target)[1] if split_subject(target)[0] else \
+                        re.sub(r"^(?:two people|a person)\s+", "", target)
+                    new.base, new.verb = f"a person {new.text}", VERBS["pose"]
+                new.subject = action.subject
+                return new
     if not any(lookup(w) or noun_verb(w) for w in words):
         reasons.append(f"dropped '{clause}': no motion in it")
         return None
+    action.text = re.sub(r"^(?:two people|a person|the person|they|both)\s+", "", action.text)
     reasons.append(f"unknown motion '{action.text}': kept as written")
     action.base, action.verb = f"a person {action.text}", VERBS["pose"]
     return action
