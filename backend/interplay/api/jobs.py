@@ -1,8 +1,11 @@
 """Generation jobs: each runs in a worker thread (never on the event loop) and appends its
 events to a buffer, so a WebSocket that connects late still replays everything from the start.
 
-Events, in order (see docs/api.md):
-    plan → (frames, highlights)* → metrics → done          or, on failure, … → error
+Events, in order (see docs/api.md and docs/review.md):
+    plan → (segment, (frames, highlights)*, review, correction*, …, segment)* → metrics → done
+    or, on failure or cancellation, … → error (with `stage`, or `cancelled: true`).
+The work itself is CoMA's Algorithm 1 in agents/orchestrator.py; this module runs it in a
+thread, turns its frames into events and stores the result.
 """
 
 from __future__ import annotations
@@ -14,10 +17,11 @@ import threading
 import time
 from collections.abc import AsyncIterator
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..agents.segment_source import Cancelled  # raised by the orchestrator too
 from ..motion.skeleton import FPS, NUM_JOINTS
 from ..store import MotionRepository, new_id
 from .motion_json import joints_list, plain
@@ -33,14 +37,13 @@ class JobSpec:
     persons: int
     seconds: float
     seed: int
+    trajectory: dict | None = field(default=None, hash=False)   # {person, points | shape …}
+    mode: str = "generate"                                      # "generate" | "react"
+    actor_motion_id: str | None = None
 
     @property
     def frames(self) -> int:
         return max(1, round(self.seconds * FPS))
-
-
-class Cancelled(Exception):
-    pass
 
 
 class Job:
@@ -54,6 +57,15 @@ class Job:
         self._events: list[dict] = []
         self._lock = threading.Lock()
         self._waiters: set[tuple[asyncio.AbstractEventLoop, asyncio.Event]] = set()
+        self._cancel = threading.Event()
+
+    def cancel(self) -> None:
+        """Ask the job to stop; it ends with an error event `cancelled: true`."""
+        self._cancel.set()
+
+    @property
+    def cancelled(self) -> bool:
+        return self._cancel.is_set()
 
     @property
     def event_count(self) -> int:
@@ -147,6 +159,13 @@ class JobManager:
         self._pool.submit(self._run, job, generator)
         return job
 
+    def cancel(self, job_id: str) -> Job | None:
+        """Cancel a job (a finished one is left as it is); None for unknown ids."""
+        job = self.get(job_id)
+        if job is not None and job.finished is None:
+            job.cancel()
+        return job
+
     def shutdown(self) -> None:
         self._closing.set()
         self._pool.shutdown(wait=False, cancel_futures=True)
@@ -163,33 +182,47 @@ class JobManager:
                     del self._jobs[j.id]
 
     def _run(self, job: Job, generator) -> None:
+        from ..agents.orchestrator import StageError
         job.status = "running"
         try:
-            self._generate(job, generator)
+            if job.cancelled:
+                raise Cancelled()
+            if job.spec.mode == "react":
+                from ..agents import reaction   # the reaction engineer's module
+                reaction.react_job(job, generator, self.repo)
+            else:
+                self._generate(job, generator)
             job.status = "done"
         except Cancelled:
             job.status = "failed"
-            job.push({"type": "error", "message": "the server is shutting down"})
+            job.push({"type": "error", "message": "cancelled", "cancelled": True}
+                     if job.cancelled else {"type": "error", "message": "the server is shutting down"})
+        except StageError as exc:
+            job.status = "failed"
+            job.push({"type": "error", "stage": exc.stage,
+                      "message": f"generation failed at {exc.stage}: {exc.reason}"})
         except Exception as exc:  # reported to the client, never raised into the pool
             log.exception("job %s failed", job.id)
             job.status = "failed"
-            job.push({"type": "error", "message": f"generation failed: {exc}"})
+            job.push({"type": "error", "stage": "store",
+                      "message": f"generation failed: {exc}"})
         finally:
             job.finished = time.monotonic()
 
     def _generate(self, job: Job, generator) -> None:
+        from ..agents.orchestrator import StageError, default_evaluator, orchestrate
         from ..motion.metrics import clip_metrics
         spec = job.spec
         req = make_request(spec.prompt, spec.persons, spec.seconds, spec.seed)
-        plan = plain(generator.plan(req))
-        job.push({"type": "plan", "plan": plan})
         total = spec.frames
         people = np.zeros((spec.persons, total, NUM_JOINTS, 3), dtype=np.float32)
         written = 0
         contacts: list = [[] for _ in range(total)]
         penetration: list = [[] for _ in range(total)]
         min_dist: list | None = [None] * total if spec.persons > 1 else None
-        for start, chunk in generator.stream(req, plan):
+
+        def on_frames(start: int, chunk: list[np.ndarray]) -> None:
+            nonlocal people, written, contacts, penetration, min_dist
             if self._closing.is_set():
                 raise Cancelled()
             chunk = [np.asarray(c, dtype=np.float32) for c in chunk]
@@ -208,6 +241,7 @@ class JobManager:
                     min_dist += [None] * grow
             people[:, start:end] = np.stack(chunk)
             written = max(written, end)
+            # A repeated start (a corrected segment, a moved path) replaces those frames.
             job.push({"type": "frames", "start": start, "total": max(total, written),
                       "people": [joints_list(c) for c in chunk]})
             # One frame of context before the chunk, so velocity-based contacts are defined.
@@ -218,16 +252,26 @@ class JobManager:
             penetration[start:end] = hl["penetration"]
             if min_dist is not None:
                 min_dist[start:end] = hl["min_distance"]
+
+        out = orchestrate(generator, req, lambda e: job.push(plain(e)), on_frames,
+                          cancelled=lambda: job.cancelled or self._closing.is_set(),
+                          trajectory=spec.trajectory, evaluator=default_evaluator())
         if written == 0:
-            raise ValueError("the generator produced no frames")
-        final = [people[i, :written] for i in range(spec.persons)]
-        metrics = plain(clip_metrics([p.astype(np.float64) for p in final], fps=FPS))
+            raise StageError("generate", "the generator produced no frames")
+        final = [p[:written] for p in out.people]
+        try:
+            metrics = plain(clip_metrics([p.astype(np.float64) for p in final], fps=FPS))
+        except Exception as exc:
+            raise StageError("metrics", f"{type(exc).__name__}: {exc}") from exc
         job.push({"type": "metrics", "metrics": metrics})
         highlights = {"contacts": contacts[:written], "penetration": penetration[:written],
                       "min_distance": min_dist[:written] if min_dist is not None else None}
-        self.repo.create(id=job.motion_id, prompt=spec.prompt, people=final,
-                         seconds=spec.seconds, seed=spec.seed, plan=plan, metrics=metrics,
-                         highlights=highlights)
+        try:
+            self.repo.create(id=job.motion_id, prompt=spec.prompt, people=final,
+                             seconds=spec.seconds, seed=spec.seed, plan=plain(out.plan),
+                             metrics=metrics, highlights=highlights, review=plain(out.review))
+        except Exception as exc:
+            raise StageError("store", f"{type(exc).__name__}: {exc}") from exc
         job.push({"type": "done", "motion_id": job.motion_id, "frames": written})
 
 

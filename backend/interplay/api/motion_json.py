@@ -55,6 +55,6 @@ def motion_payload(m: StoredMotion) -> dict:
         "seed": m.seed, "fps": m.fps, "skeleton": SKELETON_NAME,
         "people": [{"joints": joints_list(p)} for p in m.people],
         "plan": m.plan, "metrics": m.metrics, "highlights": m.highlights,
-        "parent_id": m.parent_id,
+        "parent_id": m.parent_id, "edit": m.edit, "review": m.review,
         "created_at": m.created_at.isoformat() if m.created_at else None,
     }

@@ -4,11 +4,60 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 MAX_PROMPT = 500
 MIN_SECONDS, MAX_SECONDS = 1.0, 20.0
 MAX_SEED = 2**31 - 1
+MAX_POINTS = 2000          # points of a drawn path
+MAX_COORD = 100.0          # metres from the origin
+
+
+class TrajectoryIn(BaseModel):
+    """A path for one person: drawn points on the floor ([x, z] metres, world) or a preset
+    shape (the planner's TrajectorySpec fields: shape, clockwise, size_m, …)."""
+    model_config = ConfigDict(extra="allow", json_schema_extra={"examples": [
+        {"person": 0, "points": [[0, 0], [1, 1], [2, 0]]},
+        {"person": 0, "shape": "circle", "clockwise": True, "size_m": 3}]})
+
+    person: Literal[0, 1] = Field(default=0, description="Who follows the path.")
+    points: list[tuple[float, float]] | None = Field(
+        default=None, min_length=2, max_length=MAX_POINTS,
+        description="[[x, z], …] metres on the studio floor (world coordinates).")
+    shape: str | None = Field(default=None, description="A preset shape (line, arc, circle, "
+                              "zigzag, s_curve, heart, figure_eight, square, spiral, …).")
+
+    @model_validator(mode="after")
+    def _one_of(self):
+        if (self.points is None) == (self.shape is None):
+            raise ValueError("give either points or shape")
+        if self.points is not None:
+            pts = [c for p in self.points for c in p]
+            if not all(abs(c) <= MAX_COORD and c == c for c in pts):
+                raise ValueError(f"points must be finite and within {MAX_COORD:g} m")
+            if max(abs(a - c) + abs(b - d) for (a, b), (c, d)
+                   in zip(self.points, self.points[1:])) == 0:
+                raise ValueError("points must not all be the same")
+            if self.model_extra:
+                raise ValueError(f"unexpected fields with points: {sorted(self.model_extra)}")
+        else:
+            from ..agents.plan_schema import TrajectorySpec
+            from pydantic import ValidationError
+            try:
+                TrajectorySpec.model_validate(self.spec())
+            except ValidationError as exc:
+                from ..agents.plan_schema import readable
+                raise ValueError(readable(exc)) from None
+        return self
+
+    def spec(self) -> dict:
+        """The shape's TrajectorySpec fields (without person)."""
+        return {"shape": self.shape, **(self.model_extra or {})}
+
+    def plain(self) -> dict:
+        if self.points is not None:
+            return {"person": self.person, "points": [list(p) for p in self.points]}
+        return {"person": self.person, **self.spec()}
 
 
 class JobCreate(BaseModel):
@@ -21,6 +70,23 @@ class JobCreate(BaseModel):
                            description=f"Length in seconds, {MIN_SECONDS:g}–{MAX_SECONDS:g}.")
     seed: int | None = Field(default=None, ge=0, le=MAX_SEED,
                              description="Sampling seed; random (and returned) when omitted.")
+    trajectory: TrajectoryIn | None = Field(default=None, description="A drawn path or preset "
+                                            "the person follows.")
+    mode: Literal["generate", "react"] = Field(default="generate", description="generate, or "
+                                               "react: a reactor to a stored motion's person 0.")
+    actor_motion_id: str | None = Field(default=None, description="react: the stored motion "
+                                        "whose person 0 is the actor.")
+
+    @model_validator(mode="after")
+    def _modes(self):
+        if self.mode == "react" and not self.actor_motion_id:
+            raise ValueError("mode react needs actor_motion_id")
+        if self.mode == "generate" and self.actor_motion_id:
+            raise ValueError("actor_motion_id is for mode react")
+        if self.trajectory is not None and self.trajectory.person >= self.persons:
+            raise ValueError(f"trajectory person {self.trajectory.person} does not exist in a "
+                             f"motion of {self.persons} person(s)")
+        return self
 
     @field_validator("prompt")
     @classmethod
@@ -41,13 +107,28 @@ class EditCreate(BaseModel):
     part: str | None = Field(default=None, description="What to edit: left_arm, right_arm, "
                              "left_leg, right_leg, whole_body (default) or a model part "
                              "(left_upper, right_upper, left_lower, right_lower).")
-    prompt: str = Field(description=f"What the edited part does, 1–{MAX_PROMPT} characters.")
+    prompt: str | None = Field(default=None, description=f"What the edited part does, "
+                               f"1–{MAX_PROMPT} characters (optional with a trajectory).")
     frames: list[int] | None = Field(default=None, min_length=2, max_length=2,
                                      description="[a, b]: edit frames a … b−1 only (default all).")
     seed: int | None = Field(default=None, ge=0, le=MAX_SEED,
                              description="Sampling seed; random (and stored) when omitted.")
 
-    _prompt = field_validator("prompt")(JobCreate._prompt.__func__)
+    trajectory: TrajectoryIn | None = Field(default=None, description="A drawn path or preset "
+                                            "for the motion to follow.")
+
+    @field_validator("prompt")
+    @classmethod
+    def _prompt(cls, v: str | None) -> str | None:
+        return None if v is None else JobCreate._prompt.__func__(cls, v)
+
+    @model_validator(mode="after")
+    def _something(self):
+        if self.prompt is None and self.trajectory is None:
+            raise ValueError("give a prompt, a trajectory or both")
+        if self.prompt is None and (self.part is not None or self.frames is not None):
+            raise ValueError("part and frames need a prompt")
+        return self
 
     @field_validator("part")
     @classmethod
@@ -97,7 +178,28 @@ class MotionOut(BaseModel):
     metrics: dict | None
     highlights: dict | None
     parent_id: str | None = None
+    edit: dict | None = Field(default=None, description="What made this version: {part, prompt,"
+                              " frames, trajectory}; null for a generated motion.")
+    review: dict | None = Field(default=None, description="The reviewer's rounds per segment.")
     created_at: str | None
+
+
+class Version(BaseModel):
+    id: str
+    parent_id: str | None
+    created_at: str | None
+    prompt: str
+    edit: dict | None
+
+
+class History(BaseModel):
+    versions: list[Version] = Field(description="From the root to this motion.")
+
+
+class JobCancelled(BaseModel):
+    job_id: str
+    status: str
+    cancelled: bool
 
 
 class SkeletonOut(BaseModel):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sqlalchemy import Engine, create_engine, event
+from sqlalchemy import Engine, create_engine, event, inspect, text
 from sqlalchemy.engine import make_url
 
 from .models import Base
@@ -32,4 +32,17 @@ def make_engine(url: str) -> Engine:
             raise RuntimeError(f"no driver for {parsed.drivername!r} ({exc}); for PostgreSQL "
                                "install the extra: pip install -e '.[postgres]'") from None
     Base.metadata.create_all(engine)
+    _add_missing_columns(engine)
     return engine
+
+
+def _add_missing_columns(engine: Engine) -> None:
+    """Columns added to `motions` after a database was created (nullable JSON), added in place
+    so an existing store keeps working."""
+    have = {c["name"] for c in inspect(engine).get_columns("motions")}
+    table = Base.metadata.tables["motions"]
+    with engine.begin() as conn:
+        for col in table.columns:
+            if col.name not in have and col.nullable:
+                kind = col.type.compile(dialect=engine.dialect)
+                conn.execute(text(f'ALTER TABLE motions ADD COLUMN "{col.name}" {kind}'))

@@ -41,6 +41,10 @@ class MotionRow(Base):
     plan: Mapped[dict | None] = mapped_column(JSON, nullable=True)
     metrics: Mapped[dict | None] = mapped_column(JSON, nullable=True)
     highlights: Mapped[dict | None] = mapped_column(JSON, nullable=True)
+    # The reviewer's rounds per segment (generated motions) and what made an edited version
+    # ({part, prompt, frames, trajectory}; None for a generated motion).
+    review: Mapped[dict | None] = mapped_column(JSON, nullable=True)
+    edit: Mapped[dict | None] = mapped_column(JSON, nullable=True)
     # A later version of a motion (an edit) points at the motion it came from.
     parent_id: Mapped[str | None] = mapped_column(
         String(64), ForeignKey("motions.id", ondelete="SET NULL"), nullable=True, index=True)

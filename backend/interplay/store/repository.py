@@ -36,6 +36,8 @@ class StoredMotion:
     parent_id: str | None = None
     created_at: datetime | None = None
     fps: int = FPS
+    review: dict | None = None        # the reviewer's rounds (generated motions)
+    edit: dict | None = None          # what made this version: {part, prompt, frames, trajectory}
 
     @property
     def frames(self) -> int:
@@ -52,6 +54,7 @@ class MotionSummary:
     parent_id: str | None
     created_at: datetime
     metrics: dict | None = field(default=None)
+    edit: dict | None = field(default=None)
 
 
 def _pack(people: list[np.ndarray]) -> tuple[bytes, int]:
@@ -85,13 +88,15 @@ class MotionRepository:
     def create(self, *, prompt: str, people: list[np.ndarray], seconds: float,
                seed: int | None = None, plan: dict | None = None, metrics: dict | None = None,
                highlights: dict | None = None, parent_id: str | None = None,
-               id: str | None = None) -> StoredMotion:
+               id: str | None = None, review: dict | None = None,
+               edit: dict | None = None) -> StoredMotion:
         """Store a motion and return it as read back. `id` may be pre-allocated (a job hands
         out the motion id before generation ends); otherwise a fresh one is drawn."""
         blob, frames = _pack(people)
         row = MotionRow(id=id or new_id(), prompt=prompt, persons=len(people),
                         seconds=float(seconds), seed=seed, fps=FPS, frames=frames, joints=blob,
-                        plan=plan, metrics=metrics, highlights=highlights, parent_id=parent_id)
+                        plan=plan, metrics=metrics, highlights=highlights, parent_id=parent_id,
+                        review=review, edit=edit)
         with Session(self.engine, expire_on_commit=False) as session:
             session.add(row)
             session.commit()
@@ -109,6 +114,28 @@ class MotionRepository:
             return False
         with Session(self.engine) as session:
             return session.scalar(select(func.count()).where(MotionRow.id == motion_id)) > 0
+
+    def lineage(self, motion_id: str, limit: int = 1000) -> list[MotionSummary]:
+        """The versions from the root to `motion_id` (following parent_id), oldest first;
+        [] for an unknown id. Stops at `limit` steps (and on a cycle)."""
+        cols = (MotionRow.id, MotionRow.prompt, MotionRow.persons, MotionRow.seconds,
+                MotionRow.frames, MotionRow.parent_id, MotionRow.created_at, MotionRow.edit)
+        chain: list[MotionSummary] = []
+        seen: set[str] = set()
+        with Session(self.engine) as session:
+            current = motion_id if valid_id(motion_id) else None
+            while current and current not in seen and len(chain) < limit:
+                seen.add(current)
+                row = session.scalars(select(MotionRow).options(load_only(*cols))
+                                      .where(MotionRow.id == current)).first()
+                if row is None:
+                    break
+                chain.append(MotionSummary(id=row.id, prompt=row.prompt, persons=row.persons,
+                                           seconds=row.seconds, frames=row.frames,
+                                           parent_id=row.parent_id,
+                                           created_at=_aware(row.created_at), edit=row.edit))
+                current = row.parent_id
+        return chain[::-1]
 
     def list(self, limit: int = 50, offset: int = 0) -> list[MotionSummary]:
         """Newest first, without the joints."""
@@ -129,4 +156,4 @@ class MotionRepository:
                             people=_unpack(row.joints, row.persons, row.frames), plan=row.plan,
                             metrics=row.metrics, highlights=row.highlights,
                             parent_id=row.parent_id, created_at=_aware(row.created_at),
-                            fps=row.fps)
+                            fps=row.fps, review=row.review, edit=row.edit)

@@ -21,16 +21,17 @@ router = APIRouter(prefix="/api", tags=["motions"])
              responses={**ERRORS, 503: ERRORS[404]})
 def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, request: Request) -> dict:
     """Edit `part` (left_arm, right_arm, left_leg, right_leg, whole_body or a model part) over
-    `frames` [a, b) from `prompt`; everything else stays as it was."""
+    `frames` [a, b) from `prompt`; everything else stays as it was. With `trajectory` the
+    (edited) motion's person then follows the drawn path or preset (prompt optional)."""
     parent = repo.get(motion_id)
     if parent is None:
         raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
     # Looked up here, not as a dependency, so bad input and ids get their 422/404 even while
     # the generator is unavailable (503), as for jobs.
-    generator = loaded_generator(request)
+    generator = loaded_generator(request) if body.prompt is not None else None
     try:
         edited = edit_stored(repo, generator, parent, body.part, body.prompt, body.frames,
-                             body.seed)
+                             body.seed, body.trajectory.plain() if body.trajectory else None)
     except ValueError as exc:
         raise HTTPException(422, str(exc)) from None
     except EditUnavailable as exc:

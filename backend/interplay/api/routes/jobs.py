@@ -1,12 +1,13 @@
-"""POST /api/jobs (start a generation), GET /api/jobs/{id} (its status)."""
+"""POST /api/jobs (start a generation), GET /api/jobs/{id} (its status), DELETE /api/jobs/{id}
+(cancel it)."""
 
 from __future__ import annotations
 
 from fastapi import APIRouter, HTTPException, Request
 
-from ..deps import JobsDep, generator as loaded_generator
+from ..deps import JobsDep, RepoDep, generator as loaded_generator
 from ..jobs import JobSpec, random_seed
-from ..schemas import ERRORS, JobCreate, JobCreated, JobStatus
+from ..schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
 
 router = APIRouter(prefix="/api/jobs", tags=["jobs"])
 
@@ -17,14 +18,25 @@ def stream_path(job_id: str) -> str:
 
 @router.post("", status_code=201, response_model=JobCreated,
              responses={**ERRORS, 429: ERRORS[404], 503: ERRORS[404]})
-def create_job(body: JobCreate, jobs: JobsDep, request: Request) -> JobCreated:
-    """Start generating; follow the WebSocket at `stream` for plan, frames, highlights,
-    metrics and done events. The motion is stored under `motion_id` when done."""
+def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request) -> JobCreated:
+    """Start generating; follow the WebSocket at `stream` for plan, segment, frames,
+    highlights, review, correction, metrics and done events. The motion is stored under
+    `motion_id` when done. `trajectory` makes a person follow a drawn path or preset shape;
+    `mode: react` generates a reactor to the stored motion `actor_motion_id`."""
+    if body.mode == "react":
+        if not repo.exists(body.actor_motion_id):
+            raise HTTPException(404, f"no motion {body.actor_motion_id!r} to react to")
+        try:
+            from ...agents.reaction import react_job  # noqa: F401  (the reaction engineer's)
+        except ImportError:
+            raise HTTPException(503, "react mode is not available on this server yet") from None
     # Looked up here, not as a dependency: dependencies run before the body is validated, and
     # bad input must get its 422 even while the generator is unavailable (503).
     generator = loaded_generator(request)
     seed = body.seed if body.seed is not None else random_seed()
-    spec = JobSpec(prompt=body.prompt, persons=body.persons, seconds=body.seconds, seed=seed)
+    spec = JobSpec(prompt=body.prompt, persons=body.persons, seconds=body.seconds, seed=seed,
+                   trajectory=body.trajectory.plain() if body.trajectory else None,
+                   mode=body.mode, actor_motion_id=body.actor_motion_id)
     try:
         job = jobs.submit(spec, generator)
     except OverflowError as exc:
@@ -39,3 +51,14 @@ def job_status(job_id: str, jobs: JobsDep) -> JobStatus:
         raise HTTPException(404, f"no job {job_id!r} (unknown, malformed or expired)")
     return JobStatus(job_id=job.id, motion_id=job.motion_id, status=job.status,
                      events=job.event_count, stream=stream_path(job.id))
+
+
+@router.delete("/{job_id}", response_model=JobCancelled, responses=ERRORS)
+def cancel_job(job_id: str, jobs: JobsDep) -> JobCancelled:
+    """Cancel a queued or running job: its stream ends with
+    {"type": "error", "message": "cancelled", "cancelled": true}. A finished job is left as
+    it is (cancelled: false)."""
+    job = jobs.cancel(job_id)
+    if job is None:
+        raise HTTPException(404, f"no job {job_id!r} (unknown, malformed or expired)")
+    return JobCancelled(job_id=job.id, status=job.status, cancelled=job.cancelled)

@@ -12,7 +12,7 @@ from ...motion import skeleton as sk
 from ...store import StoredMotion
 from ..deps import RepoDep
 from ..motion_json import motion_file, motion_payload
-from ..schemas import ERRORS, MotionOut, SkeletonOut
+from ..schemas import ERRORS, History, MotionOut, SkeletonOut
 
 router = APIRouter(prefix="/api", tags=["motions"])
 
@@ -27,6 +27,18 @@ def _load(repo, motion_id: str) -> StoredMotion:
 @router.get("/motions/{motion_id}", response_model=MotionOut, responses=ERRORS)
 def get_motion(motion_id: str, repo: RepoDep) -> dict:
     return motion_payload(_load(repo, motion_id))
+
+
+@router.get("/motions/{motion_id}/history", response_model=History, responses=ERRORS)
+def motion_history(motion_id: str, repo: RepoDep) -> dict:
+    """The versions from the root (a generated motion) to this one, following parent_id:
+    each with what made it (`edit`), for undo/redo and the share page."""
+    chain = repo.lineage(motion_id)
+    if not chain:
+        raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
+    return {"versions": [{"id": v.id, "parent_id": v.parent_id, "prompt": v.prompt,
+                          "created_at": v.created_at.isoformat() if v.created_at else None,
+                          "edit": v.edit} for v in chain]}
 
 
 @router.get("/motions/{motion_id}/export", responses={
