@@ -9,11 +9,20 @@ import { Progress } from "./ui/Progress";
 import { PromptBar } from "./ui/PromptBar";
 import { ShareExport } from "./ui/ShareExport";
 import { Timeline } from "./ui/Timeline";
+import { TimelineTrack } from "./ui/TimelineTrack";
+import { Tools } from "./ui/Tools";
+import { PathPanel } from "./ui/PathPanel";
+import { PartEditor } from "./ui/PartEditor";
+import { Versions } from "./ui/Versions";
+import { ThemeToggle } from "./ui/ThemeToggle";
+import { EmptyState } from "./ui/EmptyState";
+import { useKeyboard } from "./ui/keyboard";
 
 export function App() {
   useEffect(() => {
     void startStudio();
   }, []);
+  useKeyboard();
 
   return (
     <div className="app">
@@ -22,19 +31,26 @@ export function App() {
           Interplay <span className="muted">studio</span>
         </h1>
         <PromptBar />
+        <Versions />
+        <ThemeToggle />
       </header>
       <ErrorBanner />
       <main className="app__main">
         <div className="stage">
           <Viewport />
+          <Tools />
+          <EmptyState />
           <Progress />
+          <PartEditor />
           <Legend />
         </div>
         <aside className="sidebar">
+          <PathPanel />
           <PlanPanel />
           <MetricsPanel />
           <ShareExport />
         </aside>
+        <TimelineTrack />
         <Timeline />
       </main>
     </div>

@@ -4,6 +4,9 @@ import { create } from "zustand";
 import type { Skeleton } from "./api/types";
 import { initialStream, type StreamState } from "./api/stream";
 import { FrameBuffer } from "./playback/frameBuffer";
+import type { EditPart } from "./api/types";
+import type { Point, Preset } from "./directing/path";
+import { noVersions, type Versions } from "./directing/versions";
 
 export const FPS = 20;
 
@@ -14,7 +17,35 @@ export const playhead = { pos: 0 };
 /** Counters the render loop keeps (read by the test hook). */
 export const renderStats: { renders: number; quality: string } = { renders: 0, quality: "" };
 
+/** Pointer state the render loop reads (not React state): the part under the pointer, and the
+ * points of a path being drawn right now (committed to the store on release). */
+export const pointer: { hover: { person: number; part: EditPart } | null; drawing: Point[] | null; version: number } = {
+  hover: null,
+  drawing: null,
+  version: 0,
+};
+
 export type Persons = 1 | 2;
+export type Tool = "view" | "path" | "part";
+export type Theme = "dark" | "light";
+
+export interface PathState {
+  person: 0 | 1;
+  points: Point[];
+  /** The preset it came from (regenerated when the size changes), or null for a drawn path. */
+  preset: Preset | null;
+  size: number;
+}
+
+const THEME_KEY = "interplay-theme";
+
+function storedTheme(): Theme {
+  try {
+    return localStorage.getItem(THEME_KEY) === "light" ? "light" : "dark";
+  } catch {
+    return "dark";
+  }
+}
 
 export interface StudioState {
   // the prompt form
@@ -42,6 +73,21 @@ export interface StudioState {
   setSpeed(speed: number): void;
   setLoop(loop: boolean): void;
   seek(frame: number): void;
+
+  // directing
+  tool: Tool;
+  path: PathState;
+  selected: { person: number; part: EditPart } | null;
+  /** A frame range [a, b) selected on the timeline (edits are limited to it). */
+  range: [number, number] | null;
+  editing: boolean;
+  versions: Versions;
+  theme: Theme;
+  setTool(tool: Tool): void;
+  setPath(path: Partial<PathState>): void;
+  select(sel: { person: number; part: EditPart } | null): void;
+  setRange(range: [number, number] | null): void;
+  setTheme(theme: Theme): void;
 }
 
 export const useStudio = create<StudioState>()((set) => ({
@@ -68,5 +114,28 @@ export const useStudio = create<StudioState>()((set) => ({
   seek: (frame) => {
     playhead.pos = frame;
     set({ frame });
+  },
+
+  tool: "view",
+  path: { person: 0, points: [], preset: null, size: 3 },
+  selected: null,
+  range: null,
+  editing: false,
+  versions: noVersions,
+  theme: storedTheme(),
+  setTool: (tool) => set((s) => ({ tool: s.tool === tool ? "view" : tool })),
+  setPath: (path) => {
+    pointer.version++;
+    set((s) => ({ path: { ...s.path, ...path } }));
+  },
+  select: (selected) => set({ selected }),
+  setRange: (range) => set({ range }),
+  setTheme: (theme) => {
+    try {
+      localStorage.setItem(THEME_KEY, theme);
+    } catch {
+      /* private mode: not remembered */
+    }
+    set({ theme });
   },
 }));

@@ -1,19 +1,30 @@
 // The studio's actions: generate a motion (job + stream), open a stored one, start up.
-// They write per-frame data into `frames` and UI state into the store.
-import { ApiError, createJob, getMotion, getSkeleton, motionIdFromPath } from "./api/client";
+// They write per-frame data into `frames` and UI state into the store. Edits, undo/redo and
+// re-runs are in directing/actions.ts.
+import { ApiError, cancelJob, createJob, getHistory, getMotion, getSkeleton, motionIdFromPath } from "./api/client";
 import { openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
-import type { StreamEvent } from "./api/types";
+import { initialAgent } from "./api/agent";
+import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
+import { fromHistory, moveTo } from "./directing/versions";
 import { FPS, frames, playhead, useStudio } from "./store";
 
 let stream: StreamHandle | null = null;
 
-function message(err: unknown): string {
+export function message(err: unknown): string {
   if (err instanceof ApiError || err instanceof Error) return err.message;
   return String(err);
 }
 
-function fail(err: unknown): void {
+export function fail(err: unknown): void {
   useStudio.setState({ error: message(err) });
+}
+
+/** Put a URL in the address bar for the current version (push: a new version; replace: undo/redo). */
+export function showInUrl(id: string, mode: "push" | "replace" = "push"): void {
+  const path = `/m/${id}`;
+  if (window.location.pathname === path) return;
+  if (mode === "push") window.history.pushState({ motionId: id }, "", path);
+  else window.history.replaceState({ motionId: id }, "", path);
 }
 
 function handleEvent(ev: StreamEvent): void {
@@ -26,69 +37,110 @@ function handleEvent(ev: StreamEvent): void {
   }
   useStudio.setState((s) => ({ stream: reduceStream(s.stream, ev) }));
   if (ev.type === "error") {
-    useStudio.setState({ error: ev.message });
+    useStudio.setState({ error: ev.cancelled ? null : ev.message });
     stream = null;
   } else if (ev.type === "done") {
     stream = null;
-    useStudio.setState({ motionId: ev.motion_id });
-    const path = `/m/${ev.motion_id}`;
-    if (window.location.pathname !== path) window.history.pushState({ motionId: ev.motion_id }, "", path);
+    useStudio.setState({ motionId: ev.motion_id, versions: fromHistory([ev.motion_id], ev.motion_id) });
+    showInUrl(ev.motion_id);
   }
 }
 
-/** Start a generation job with the form's prompt and stream its frames into the scene. */
-export async function generate(): Promise<void> {
+/** The drawn (or preset) path to send with a job, when there is one. */
+export function currentTrajectory(): Trajectory | undefined {
+  const { path, persons } = useStudio.getState();
+  if (path.points.length < 2) return undefined;
+  const person = (Math.min(path.person, persons - 1) as 0 | 1) ?? 0;
+  return { person, points: path.points };
+}
+
+/** Start a generation job (the form's prompt, or `override`) and stream its frames into the scene. */
+export async function generate(override: Partial<JobRequest> = {}): Promise<void> {
   const { prompt, persons, seconds } = useStudio.getState();
   stream?.close();
   stream = null;
-  useStudio.setState({ error: null });
+  useStudio.setState({ error: null, selected: null, range: null });
+  const req: JobRequest = { prompt, persons, seconds, ...override };
+  const trajectory = override.trajectory ?? currentTrajectory();
+  if (trajectory) req.trajectory = trajectory;
   let job;
   try {
-    job = await createJob({ prompt, persons, seconds });
+    job = await createJob(req);
   } catch (err) {
     fail(err);
     return;
   }
-  frames.reset(persons);
+  frames.reset(req.persons);
   playhead.pos = 0;
   useStudio.setState({
-    stream: startStream(),
+    stream: startStream(null, job.job_id),
     motionId: null,
-    motionPersons: persons,
+    motionPersons: req.persons,
     frame: 0,
     playing: true,
   });
   stream = openStream(job.stream, handleEvent);
 }
 
-/** Load a stored motion (a share link) into the scene. */
+/** Cancel the running job. */
+export async function cancel(): Promise<void> {
+  const jobId = useStudio.getState().stream.jobId;
+  if (!jobId) return;
+  try {
+    await cancelJob(jobId);
+  } catch (err) {
+    fail(err);
+  }
+}
+
+/** Show a stored motion (already fetched) in the scene. */
+export function showMotion(motion: Motion): void {
+  frames.loadMotion(motion);
+  playhead.pos = 0;
+  const n = frames.received;
+  useStudio.setState({
+    error: null,
+    stream: {
+      phase: "done",
+      plan: motion.plan,
+      received: n,
+      total: n,
+      metrics: motion.metrics,
+      motionId: motion.id,
+      error: null,
+      agent: initialAgent,
+      jobId: null,
+      cancelled: false,
+    },
+    motionId: motion.id,
+    motionPersons: motion.people.length,
+    prompt: motion.prompt,
+    persons: motion.people.length === 2 ? 2 : 1,
+    seconds: Math.max(1, Math.min(20, Math.round(n / FPS))),
+    frame: 0,
+    playing: true,
+  });
+}
+
+/** Load a stored motion (a share link, a version) into the scene, and its version history. */
 export async function openMotion(id: string): Promise<void> {
   stream?.close();
   stream = null;
   try {
     const motion = await getMotion(id);
-    frames.loadMotion(motion);
-    playhead.pos = 0;
-    const n = frames.received;
-    useStudio.setState({
-      error: null,
-      stream: {
-        phase: "done",
-        plan: motion.plan,
-        received: n,
-        total: n,
-        metrics: motion.metrics,
-        motionId: motion.id,
-        error: null,
-      },
-      motionId: motion.id,
-      motionPersons: motion.people.length,
-      prompt: motion.prompt,
-      persons: motion.people.length === 2 ? 2 : 1,
-      seconds: Math.max(1, Math.min(20, Math.round(n / FPS))),
-      frame: 0,
-      playing: true,
-    });
+    showMotion(motion);
+    const known = useStudio.getState().versions;
+    if (known.ids.includes(id)) {
+      useStudio.setState({ versions: moveTo(known, id) });
+      return;
+    }
+    let chain = [motion.parent_id, id].filter((x): x is string => Boolean(x));
+    try {
+      chain = (await getHistory(id)).map((v) => v.id);
+    } catch {
+      /* no history endpoint (yet): the parent and this version */
+    }
+    useStudio.setState({ versions: fromHistory(chain, id) });
   } catch (err) {
     fail(err);
   }

@@ -1,6 +1,6 @@
 // Typed REST client for the studio API. Every non-2xx answer becomes an ApiError
 // carrying the server's readable `detail` message.
-import type { ExportFormat, JobCreated, JobRequest, Motion, Skeleton } from "./types";
+import type { EditRequest, ExportFormat, JobCreated, JobRequest, Motion, Skeleton, Version } from "./types";
 
 export class ApiError extends Error {
   constructor(
@@ -56,6 +56,26 @@ export function createJob(req: JobRequest): Promise<JobCreated> {
 
 export function getMotion(id: string): Promise<Motion> {
   return request<Motion>(`/api/motions/${encodeURIComponent(id)}`);
+}
+
+/** Apply an edit (part, frames, trajectory) to a stored motion: the new version (201). */
+export function editMotion(id: string, req: EditRequest): Promise<Motion> {
+  return request<Motion>(`/api/motions/${encodeURIComponent(id)}/edit`, {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(req),
+  });
+}
+
+/** The versions from the root to this motion. */
+export async function getHistory(id: string): Promise<Version[]> {
+  const body = await request<{ versions: Version[] }>(`/api/motions/${encodeURIComponent(id)}/history`);
+  return body.versions;
+}
+
+/** Cancel a running job (its stream then ends with a cancelled error). */
+export async function cancelJob(jobId: string): Promise<void> {
+  await request<unknown>(`/api/jobs/${encodeURIComponent(jobId)}`, { method: "DELETE" });
 }
 
 export function getSkeleton(): Promise<Skeleton> {

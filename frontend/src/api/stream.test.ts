@@ -40,7 +40,7 @@ describe("reduceStream", () => {
     const s0 = run([{ type: "frames", start: 0, total: 2, people: [walkFrames(2)] }]);
     const hl: StreamEvent = { type: "highlights", start: 0, contacts: [[], []], penetration: [[], []], min_distance: null };
     expect(reduceStream(s0, hl)).toBe(s0);
-    expect(reduceStream(s0, { type: "review" } as unknown as StreamEvent)).toBe(s0);
+    expect(reduceStream(s0, { type: "heartbeat" } as unknown as StreamEvent)).toBe(s0);
   });
 
   it("stops at an error and ignores what follows", () => {

@@ -1,5 +1,6 @@
 // The generation stream: a pure reducer over the contract's events (plan → frames/highlights
 // … → metrics → done | error) and a thin WebSocket client that feeds it.
+import { initialAgent, reduceAgent, type AgentState } from "./agent";
 import type { Metrics, Plan, StreamEvent } from "./types";
 
 export type StreamPhase = "idle" | "connecting" | "generating" | "done" | "error";
@@ -14,6 +15,11 @@ export interface StreamState {
   metrics: Metrics | null;
   motionId: string | null;
   error: string | null;
+  /** Segment statuses, review rounds and corrections (the agent timeline). */
+  agent: AgentState;
+  /** The job being streamed (to cancel it). */
+  jobId?: string | null;
+  cancelled?: boolean;
 }
 
 export const initialStream: StreamState = {
@@ -24,10 +30,13 @@ export const initialStream: StreamState = {
   metrics: null,
   motionId: null,
   error: null,
+  agent: initialAgent,
+  jobId: null,
+  cancelled: false,
 };
 
-export function startStream(motionId: string | null = null): StreamState {
-  return { ...initialStream, phase: "connecting", motionId };
+export function startStream(motionId: string | null = null, jobId: string | null = null): StreamState {
+  return { ...initialStream, phase: "connecting", motionId, jobId };
 }
 
 /** Next state after one event. Events after `done` or `error` are ignored; frames and
@@ -59,7 +68,11 @@ export function reduceStream(state: StreamState, event: StreamEvent): StreamStat
         received: Math.min(state.received, event.frames),
       };
     case "error":
-      return { ...state, phase: "error", error: event.message || "generation failed" };
+      return { ...state, phase: "error", error: event.message || "generation failed", cancelled: Boolean(event.cancelled) };
+    case "segment":
+    case "review":
+    case "correction":
+      return { ...state, phase: "generating", agent: reduceAgent(state.agent, event) };
     default:
       return state;
   }

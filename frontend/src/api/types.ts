@@ -5,11 +5,53 @@ export type Vec3 = [number, number, number];
 /** One person's frames: T × 22 × [x, y, z]. */
 export type PersonFrames = Vec3[][];
 
+/** A path on the ground for one person: drawn points [x, z] (metres) or a preset shape. */
+export type Trajectory =
+  | { person: 0 | 1; points: [number, number][] }
+  | { person: 0 | 1; shape: { shape: string; size_m?: number; clockwise?: boolean; [key: string]: unknown } };
+
 export interface JobRequest {
   prompt: string;
   persons: 1 | 2;
   seconds: number;
   seed?: number;
+  trajectory?: Trajectory;
+}
+
+/** Body parts the edit endpoint takes (aliases of CoMA's four parts, or the whole body). */
+export type EditPart = "left_arm" | "right_arm" | "left_leg" | "right_leg" | "whole_body";
+
+export interface EditRequest {
+  part?: EditPart;
+  prompt?: string;
+  frames?: [number, number];
+  seed?: number;
+  trajectory?: Trajectory;
+}
+
+/** What made a version: the edit applied to its parent (null for a generated motion). */
+export interface EditInfo {
+  part?: string | null;
+  prompt?: string | null;
+  frames?: [number, number] | null;
+  trajectory?: Trajectory | null;
+}
+
+export interface Version {
+  id: string;
+  parent_id: string | null;
+  created_at?: string;
+  prompt?: string;
+  edit?: EditInfo | null;
+}
+
+/** A reviewer's instruction (issue #7 contract). */
+export interface Instruction {
+  kind: "edit_part" | "inbetween" | "regenerate" | string;
+  part?: string;
+  prompt?: string;
+  frames?: [number, number];
+  reason?: string;
 }
 
 export interface JobCreated {
@@ -58,6 +100,8 @@ export interface Motion {
   metrics: Metrics | null;
   highlights: Highlights | null;
   created_at: string;
+  parent_id?: string | null;
+  edit?: EditInfo | null;
 }
 
 export interface Skeleton {
@@ -80,6 +124,26 @@ export type StreamEvent =
     }
   | { type: "metrics"; metrics: Metrics }
   | { type: "done"; motion_id: string; frames: number }
-  | { type: "error"; message: string };
+  | { type: "error"; message: string; cancelled?: boolean }
+  | { type: "segment"; index: number; status: "generating" | "done" | string; generator?: string }
+  | {
+      type: "review";
+      segment: number;
+      round: number;
+      captions: Record<string, string>;
+      score: number;
+      checks?: Record<string, unknown>;
+      instructions: Instruction[];
+      verdict: "ok" | "correct" | string;
+    }
+  | {
+      type: "correction";
+      segment: number;
+      round: number;
+      instruction: Instruction;
+      accepted: boolean;
+      score_before: number;
+      score_after: number;
+    };
 
 export type ExportFormat = "bvh" | "json";

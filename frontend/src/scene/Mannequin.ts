@@ -60,8 +60,14 @@ interface Part {
   colour: THREE.Color;
 }
 
+export const SELECT_COLOUR = "#ffd166";
+export const HOVER_COLOUR = "#fff3c4";
+
 export class Mannequin {
   readonly group = new THREE.Group();
+  /** Joints of the selected / hovered body part (click to edit), painted on top of part colours. */
+  selected = new Set<number>();
+  hovered = new Set<number>();
   private readonly bonePairs: [number, number][];
   private readonly boneParts: Part[] = [];
   private readonly lengths: number[] = [];
@@ -85,7 +91,9 @@ export class Mannequin {
       const length = Math.max(1e-3, this.point(rest, child, this.a).distanceTo(this.point(rest, parent, this.b)));
       const radius = boneRadius(skeleton.joints[child]);
       const geometry = new THREE.CapsuleGeometry(radius, length, ...quality.capsule);
-      this.boneParts.push(this.add(geometry, colours[child]));
+      const part = this.add(geometry, colours[child]);
+      part.mesh.userData = { person, joint: child };
+      this.boneParts.push(part);
       this.lengths.push(length);
     }
     skeleton.joints.forEach((name, j) => {
@@ -94,7 +102,9 @@ export class Mannequin {
         .map(([c]) => boneRadius(skeleton.joints[c]));
       const r = name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
       const light = new THREE.Color(colours[j]).lerp(new THREE.Color("#ffffff"), 0.18);
-      this.jointParts.push(this.add(new THREE.SphereGeometry(r, ...quality.sphere), "#" + light.getHexString()));
+      const part = this.add(new THREE.SphereGeometry(r, ...quality.sphere), "#" + light.getHexString());
+      part.mesh.userData = { person, joint: j };
+      this.jointParts.push(part);
     });
     if (!shadowMap) {
       for (const [name, size] of BLOBS) {
@@ -131,13 +141,13 @@ export class Mannequin {
       const len = dir.length();
       if (len > 1e-6) mesh.quaternion.setFromUnitVectors(UP, dir.divideScalar(len));
       mesh.scale.set(1, len / this.lengths[i], 1);
-      this.paint(this.boneParts[i], penetrating.has(child) ? PENETRATION_COLOUR : null, 0.45);
+      this.paint(this.boneParts[i], penetrating.has(child) ? PENETRATION_COLOUR : this.pickColour(child), 0.45);
     });
     this.jointParts.forEach((part, j) => {
       this.point(joints, j, part.mesh.position);
       const contact = contacts.has(j);
       part.mesh.scale.setScalar(contact ? 1.3 : 1);
-      this.paint(part, contact ? CONTACT_COLOUR : null, 0.7);
+      this.paint(part, contact ? CONTACT_COLOUR : this.pickColour(j), 0.7);
     });
     for (const { joint, mesh, mat } of this.blobs) {
       const y = joints[3 * joint + 1];
@@ -147,6 +157,15 @@ export class Mannequin {
       mat.opacity = 0.55 * (1 - 0.7 * lift);
       mesh.scale.setScalar(1 + 0.5 * lift);
     }
+  }
+
+  /** Meshes a pointer ray can hit (bones and joints; userData {person, joint}). */
+  get pickable(): THREE.Object3D[] {
+    return [...this.boneParts, ...this.jointParts].map((p) => p.mesh);
+  }
+
+  private pickColour(j: number): string | null {
+    return this.selected.has(j) ? SELECT_COLOUR : this.hovered.has(j) ? HOVER_COLOUR : null;
   }
 
   private paint(part: Part, highlight: string | null, glow: number): void {

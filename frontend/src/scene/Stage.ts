@@ -7,6 +7,7 @@ import type { FrameBuffer } from "../playback/frameBuffer";
 import { contactJoints, penetratingBones } from "./colours";
 import { Ground } from "./Ground";
 import { Mannequin } from "./Mannequin";
+import { PathOverlay } from "./PathOverlay";
 import { QUALITY, type Quality, type QualitySettings } from "./quality";
 
 const BACKGROUND = "#14161b";
@@ -21,6 +22,7 @@ export class Stage {
   private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
   private dirty = true;
+  readonly path = new PathOverlay();
 
   constructor(
     readonly canvas: HTMLCanvasElement,
@@ -48,7 +50,7 @@ export class Stage {
     fill.position.set(-4, 3, -3);
     this.scene.add(fill);
 
-    this.scene.add(this.ground.group);
+    this.scene.add(this.ground.group, this.path.group);
 
     this.camera.position.set(2.4, 1.8, 5.2);
     this.controls = new OrbitControls(this.camera, canvas);
@@ -89,6 +91,23 @@ export class Stage {
 
   get people(): number {
     return this.mannequins.length;
+  }
+
+  /** Meshes of every mannequin that a pointer ray can pick. */
+  get pickable(): THREE.Object3D[] {
+    return this.mannequins.flatMap((m) => m.pickable);
+  }
+
+  /** Joints to paint as selected / hovered, per person (applied at the next pose). */
+  setSelection(selected: Set<number>[], hovered: Set<number>[]): void {
+    this.mannequins.forEach((m, p) => {
+      m.selected = selected[p] ?? new Set();
+      m.hovered = hovered[p] ?? new Set();
+    });
+  }
+
+  markDirty(): void {
+    this.dirty = true;
   }
 
   /** Where the people are at frame t: the mean pelvis position on the floor. */
@@ -166,6 +185,7 @@ export class Stage {
 
   dispose(): void {
     this.clearPeople();
+    this.path.dispose();
     this.ground.dispose();
     this.controls.dispose();
     this.renderer.dispose();

@@ -4,6 +4,9 @@
 import { useEffect, useRef } from "react";
 import { advance, frameIndex } from "../playback/timeline";
 import { FPS, frames, playhead, renderStats, useStudio } from "../store";
+import { jointsOfPart } from "../directing/parts";
+import { pointer } from "../store";
+import { attachPointer } from "./interaction";
 import { detectQuality } from "./quality";
 import { Stage } from "./Stage";
 
@@ -20,6 +23,8 @@ export function Viewport() {
     observer.observe(canvas);
     fit();
 
+    const detach = attachPointer(stage, canvas);
+    let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1 };
     let generation = -1; // which FrameBuffer contents the mannequins were built for
     let drawn = { frame: -1, version: -1 };
     let last = performance.now();
@@ -39,6 +44,20 @@ export function Viewport() {
           generation = frames.generation;
           drawn = { frame: -1, version: -1 };
         }
+      }
+      stage.controls.enabled = s.tool !== "path";
+      if (overlay.pointer !== pointer.version || overlay.path !== s.path || overlay.tool !== s.tool ||
+        overlay.selected !== s.selected || overlay.gen !== generation) {
+        const points = pointer.drawing ?? s.path.points;
+        stage.path.update(points, s.path.person, s.tool === "path" && !pointer.drawing);
+        if (skeleton) {
+          const sets = (sel: { person: number; part: Parameters<typeof jointsOfPart>[1] } | null) =>
+            [0, 1].map((p) => new Set(sel && sel.person === p ? jointsOfPart(skeleton.joints, sel.part) : []));
+          stage.setSelection(sets(s.selected), sets(s.tool === "part" ? pointer.hover : null));
+        }
+        overlay = { pointer: pointer.version, path: s.path, tool: s.tool, selected: s.selected, gen: generation };
+        drawn = { frame: -1, version: -1 };
+        stage.markDirty();
       }
       if (stage.people > 0 && skeleton) {
         const clock = advance({ pos: playhead.pos, playing: s.playing }, dt, {
@@ -62,6 +81,7 @@ export function Viewport() {
     raf = requestAnimationFrame(tick);
     return () => {
       cancelAnimationFrame(raf);
+      detach();
       observer.disconnect();
       stage.dispose();
     };

@@ -1,33 +1,48 @@
-import type { PlanSegment } from "../api/types";
-import { FPS, useStudio } from "../store";
+import { useShallow } from "zustand/react/shallow";
+import { useStudio } from "../store";
+import { SegmentCard } from "./SegmentCard";
 
-function peopleCount(persons: PlanSegment["persons"]): number {
-  return Array.isArray(persons) ? persons.length : Number(persons) || 0;
-}
-
-/** What the planner decided: the segments of the motion (frames shown as seconds). */
+/** The agent timeline: what the planner decided (segments, part edits, trajectory), then each
+ * segment's generation, review rounds and corrections as they stream; re-run a segment. */
 export function PlanPanel() {
-  const plan = useStudio((s) => s.stream.plan);
+  const s = useStudio(
+    useShallow((s) => ({
+      plan: s.stream.plan,
+      agent: s.stream.agent,
+      phase: s.stream.phase,
+      persons: s.motionPersons,
+      editing: s.editing,
+      motionId: s.motionId,
+    })),
+  );
+  const { plan } = s;
   const segments = plan?.segments ?? [];
+  const busy = s.phase === "connecting" || s.phase === "generating" || s.editing;
+  const trajectory = plan?.trajectory as { shape?: string; person?: number } | undefined;
   return (
     <section className="panel" aria-labelledby="plan-title" data-testid="plan">
-      <h2 id="plan-title">Plan</h2>
+      <h2 id="plan-title">Agent timeline</h2>
       {!segments.length ? (
-        <p className="muted small">What the planner decided appears here.</p>
+        <p className="muted small">The plan and each review round appear here while a motion generates.</p>
       ) : (
         <ol className="plan__segments">
-          {segments.map((seg, i) => {
-            const n = peopleCount(seg.persons);
-            return (
-              <li key={i}>
-                <span>{seg.prompt}</span>
-                <span className="muted small">
-                  {(seg.start / FPS).toFixed(1)}–{(seg.end / FPS).toFixed(1)} s · {n === 1 ? "1 person" : `${n} people`}
-                </span>
-              </li>
-            );
-          })}
+          {segments.map((seg, i) => (
+            <SegmentCard
+              key={i}
+              index={i}
+              seg={seg}
+              progress={s.agent[i]}
+              canRerun={!busy}
+              canInbetween={!busy && s.phase === "done" && s.persons === 1 && Boolean(s.motionId)}
+            />
+          ))}
         </ol>
+      )}
+      {trajectory && (
+        <p className="small plan__meta" data-testid="plan-trajectory">
+          path: {trajectory.shape ?? "drawn"}
+          {typeof trajectory.person === "number" ? ` · person ${trajectory.person === 0 ? "A" : "B"}` : ""}
+        </p>
       )}
       {plan && (plan.planner || plan.generator) && (
         <p className="muted small plan__meta">

@@ -1,14 +1,32 @@
+import { cancel } from "../studio";
 import { useStudio } from "../store";
 
-/** Generation progress: frames received / total while the stream runs. */
+/** Generation progress: frames received / total while the stream runs (with Cancel), or the
+ * edit being applied. */
 export function Progress() {
   const { phase, received, total } = useStudio((s) => s.stream);
+  const editing = useStudio((s) => s.editing);
+  if (editing) {
+    return (
+      <div className="progress" data-testid="progress" role="status" aria-live="polite">
+        <div className="progress__label">Applying the edit…</div>
+        <div className="progress__track progress__track--busy" role="progressbar">
+          <div className="progress__bar" />
+        </div>
+      </div>
+    );
+  }
   if (phase !== "connecting" && phase !== "generating") return null;
   const fraction = total > 0 ? received / total : 0;
   const label = total > 0 ? `Generating · ${received} / ${total} frames` : "Planning…";
   return (
     <div className="progress" data-testid="progress" role="status" aria-live="polite">
-      <div className="progress__label">{label}</div>
+      <div className="progress__label">
+        <span>{label}</span>
+        <button className="link" data-testid="cancel" onClick={() => void cancel()}>
+          Cancel
+        </button>
+      </div>
       <div
         className="progress__track"
         role="progressbar"

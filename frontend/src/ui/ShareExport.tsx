@@ -23,6 +23,19 @@ export function ShareExport() {
     setCopied({ id: motionId, url, ok });
   };
 
+  /** Both people of the scene: two downloads (one BVH per person, the same frame of reference). */
+  const downloadBoth = () => {
+    if (!motionId) return;
+    for (let p = 0; p < persons; p++) {
+      const a = document.createElement("a");
+      a.href = exportUrl(motionId, "bvh", p);
+      a.download = `interplay-${motionId}-person${p}.bvh`;
+      document.body.appendChild(a);
+      a.click();
+      a.remove();
+    }
+  };
+
   return (
     <section className="panel" aria-labelledby="share-title">
       <h2 id="share-title">Share &amp; export</h2>
@@ -42,6 +55,11 @@ export function ShareExport() {
             BVH{persons === 2 ? ` · person ${p + 1}` : ""}
           </a>
         ))}
+        {ready && persons === 2 && (
+          <button data-testid="export-bvh-both" onClick={downloadBoth} title="Both people: one BVH file each">
+            BVH · both
+          </button>
+        )}
         <a
           className={`button${ready ? "" : " disabled"}`}
           data-testid="export-json"

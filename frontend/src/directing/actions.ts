@@ -1,0 +1,88 @@
+// Directing actions: apply an edit (body part, frame range, drawn path) to the current motion
+// as a new version, move between versions (undo/redo), re-run a planned segment.
+import { editMotion, getMotion } from "../api/client";
+import type { EditRequest } from "../api/types";
+import { fail, generate, openMotion, showInUrl, showMotion, currentTrajectory } from "../studio";
+import { useStudio } from "../store";
+import { canRedo, canUndo, current, pushVersion, redo as redoV, undo as undoV } from "./versions";
+
+function randomSeed(): number {
+  return Math.floor(Math.random() * 2 ** 31);
+}
+
+/** POST /edit on the current version; the answer becomes the next version and plays. */
+export async function applyEdit(req: EditRequest): Promise<boolean> {
+  const s = useStudio.getState();
+  const id = current(s.versions) ?? s.motionId;
+  if (!id || s.editing) return false;
+  useStudio.setState({ editing: true, error: null });
+  try {
+    const motion = await editMotion(id, { seed: randomSeed(), ...req });
+    showMotion(motion);
+    useStudio.setState((st) => ({ versions: pushVersion(st.versions, motion.id) }));
+    showInUrl(motion.id, "push");
+    return true;
+  } catch (err) {
+    fail(err);
+    return false;
+  } finally {
+    useStudio.setState({ editing: false });
+  }
+}
+
+/** Edit the selected part (or the whole body) with an instruction, over the selected range. */
+export function applyPartEdit(prompt: string): Promise<boolean> {
+  const { selected, range } = useStudio.getState();
+  const req: EditRequest = { part: selected?.part ?? "whole_body", prompt };
+  if (range) req.frames = range;
+  return applyEdit(req);
+}
+
+/** Send the drawn path to /edit: the current motion follows it. */
+export function applyPathToMotion(): Promise<boolean> {
+  const trajectory = currentTrajectory();
+  if (!trajectory) {
+    useStudio.setState({ error: "draw a path first (at least two points)" });
+    return Promise.resolve(false);
+  }
+  return applyEdit({ trajectory });
+}
+
+async function goTo(id: string | null): Promise<void> {
+  if (!id) return;
+  await openMotion(id);
+  showInUrl(id, "replace");
+}
+
+export async function undo(): Promise<void> {
+  const v = useStudio.getState().versions;
+  if (!canUndo(v) || useStudio.getState().editing) return;
+  await goTo(current(undoV(v)));
+}
+
+export async function redo(): Promise<void> {
+  const v = useStudio.getState().versions;
+  if (!canRedo(v) || useStudio.getState().editing) return;
+  await goTo(current(redoV(v)));
+}
+
+/** Re-run plan segment i: a new job with its prompt and a new seed, or (`inbetween`) an
+ * in-between edit of its frames of the current motion. */
+export async function rerunSegment(i: number, how: "job" | "inbetween"): Promise<void> {
+  const { stream, seconds, motionPersons } = useStudio.getState();
+  const seg = stream.plan?.segments[i];
+  if (!seg) return;
+  if (how === "inbetween") {
+    await applyEdit({ part: "whole_body", prompt: seg.prompt, frames: [seg.start, seg.end] });
+    return;
+  }
+  const persons = (motionPersons === 2 ? 2 : 1) as 1 | 2;
+  const secs = Math.max(1, Math.min(20, Math.round((seg.end - seg.start) / 20) || seconds));
+  await generate({ prompt: seg.prompt, persons, seconds: secs, seed: randomSeed() });
+}
+
+/** Reload the current version (after an error). */
+export async function reload(): Promise<void> {
+  const id = useStudio.getState().motionId;
+  if (id) showMotion(await getMotion(id));
+}

@@ -1,0 +1,49 @@
+// Pointer rays into the stage: the ground point under the pointer (y = 0 plane), the mannequin
+// joint (bone or joint sphere) under it, or a path handle under it.
+import * as THREE from "three";
+
+export interface JointHit {
+  person: number;
+  joint: number;
+}
+
+const GROUND = new THREE.Plane(new THREE.Vector3(0, 1, 0), 0);
+
+export class Picker {
+  private readonly ray = new THREE.Raycaster();
+  private readonly ndc = new THREE.Vector2();
+
+  constructor(
+    private readonly canvas: HTMLCanvasElement,
+    private readonly camera: THREE.Camera,
+  ) {}
+
+  /** Aim the ray through a client (CSS pixel) position. */
+  private aim(clientX: number, clientY: number): THREE.Raycaster {
+    const r = this.canvas.getBoundingClientRect();
+    this.ndc.set(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
+    this.ray.setFromCamera(this.ndc, this.camera);
+    return this.ray;
+  }
+
+  /** Ground point [x, z] under the pointer, or null (looking above the horizon). */
+  ground(clientX: number, clientY: number): [number, number] | null {
+    const hit = this.aim(clientX, clientY).ray.intersectPlane(GROUND, new THREE.Vector3());
+    return hit ? [hit.x, hit.z] : null;
+  }
+
+  /** The nearest mannequin joint (or bone, by its child joint) under the pointer. */
+  joint(clientX: number, clientY: number, meshes: THREE.Object3D[]): JointHit | null {
+    const hit = this.aim(clientX, clientY).intersectObjects(meshes, false)[0];
+    const data = hit?.object.userData as Partial<JointHit> | undefined;
+    return data && typeof data.person === "number" && typeof data.joint === "number"
+      ? { person: data.person, joint: data.joint }
+      : null;
+  }
+
+  /** Index of the path handle under the pointer, or null. */
+  handle(clientX: number, clientY: number, handles: THREE.Object3D[]): number | null {
+    const hit = this.aim(clientX, clientY).intersectObjects(handles, false)[0];
+    return hit ? (hit.object.userData.index as number) : null;
+  }
+}
