@@ -1,4 +1,4 @@
-"""The `interplay` command: serve, generate, edit, metrics, export, bench, data build.
+"""The `interplay` command: serve, generate, edit, metrics, export, bench, eval, data build.
 
 Bad files or arguments exit with code 2 and a one-line message on stderr."""
 
@@ -202,6 +202,22 @@ def cmd_data(args) -> int:
     return int(build_main(args.rest) or 0)
 
 
+def cmd_eval(args) -> int:
+    from .eval.report import EvalConfig, format_table, run_eval
+    from .eval.rows import ROW_NAMES
+    rows = [r.strip() for r in args.rows.split(",") if r.strip()] if args.rows else list(ROW_NAMES)
+    unknown = [r for r in rows if r not in ROW_NAMES]
+    if unknown or not rows:
+        raise CliError(f"--rows: unknown row(s) {unknown}; expected some of {','.join(ROW_NAMES)}")
+    try:
+        cfg = EvalConfig(repeats=args.repeats, seed=args.seed)
+        report = run_eval(rows, cfg, log=lambda m: print(m, file=sys.stderr))
+    except (ValueError, FileNotFoundError) as exc:
+        raise CliError(str(exc)) from None
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
 def _seconds(text: str) -> float:
     try:
         return float(text)
@@ -267,6 +283,15 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--only", choices=("api", "model"), help="one section: jobs through the API, "
                    "or SPAM on onnxruntime (default both)")
     p.set_defaults(func=cmd_bench)
+
+    p = sub.add_parser("eval", help="text-to-motion metrics (R-precision, FID, …) of every "
+                       "generator on the test split, with 95%% confidence intervals")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--repeats", type=int, default=10, help="repeats for the CIs (default 10)")
+    p.add_argument("--rows", help="comma-separated: real,retrieval,spam,spam_nocs,spam_vq,"
+                   "single_vq (default all; rows without weights are skipped)")
+    p.add_argument("--seed", type=int, default=0)
+    p.set_defaults(func=cmd_eval)
 
     p = sub.add_parser("data", help="processed data set: `interplay data build [options]`")
     p.add_argument("action", choices=("build",))
