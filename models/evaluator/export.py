@@ -101,8 +101,10 @@ def retrieval_table(runtime: Runtime, clips, pools: int = 20) -> dict:
     return out
 
 
-def model_card(ckpt: dict, table: dict, onnx_error: float, params: int) -> str:
+def model_card(ckpt: dict, table: dict, onnx_error: float, params: int, out: Path) -> str:
     cfg = ckpt["config"]
+    sizes = ", ".join(f"{f} {(out / f).stat().st_size / 1e6:.1f} MB"
+                      for f in ("motion_encoder.onnx", "text_proj.npz"))
     d = ckpt["data"]
     chosen = [h for h in ckpt["history"] if h.get("best")]
     best = chosen[-1] if chosen else None
@@ -123,11 +125,11 @@ reviewer agent (`interplay.agents.evaluator.Evaluator.score`). Runtime: numpy + 
   Windows up to {cfg['max_frames']} frames (10 s); longer motions: chunk embeddings averaged.
 - Text side: frozen all-MiniLM-L6-v2 embeddings (384-d, `interplay.text.encoder`) → MLP
   (384 → {cfg['text_hidden']} → {cfg['embed_dim']}, tanh-GELU) → unit vector (`text_proj.npz`).
-- {params:,} trained parameters. ONNX vs torch: max |Δembedding| = {onnx_error:.1e}.
+- {params:,} trained parameters ({sizes}). ONNX vs torch: max |Δembedding| = {onnx_error:.1e}.
 
 ## Training
-- Data: the TRAIN split only of the processed set (`models/data`, {d['clips']} clips; salsa
-  pairs as two single people), {d['tracks']} person tracks incl. left/right mirrors
+- Data: the TRAIN split only of the processed set (`models/data`, {d['clips']} real clips;
+  salsa pairs as two single people; composed synthetic pairs left out), {d['tracks']} person tracks incl. left/right mirrors
   ({d['frames']} frames at 20 fps). Random windows of {cfg['min_frames'] / 20:g}–{cfg['max_frames'] / 20:g} s
   (shorter clips whole). Text per window: the clip prompt (share {cfg['prompt_share']}) or the
   automatic body caption overlapping it most; mirrored windows get mirrored texts (left ↔
@@ -174,7 +176,8 @@ def main(argv: list[str] | None = None) -> int:
     if not args.no_card:
         table = retrieval_table(runtime, default_clips(args.data_dir))
         params = sum(p.numel() for p in model.parameters())
-        (Path(args.out) / "MODEL_CARD.md").write_text(model_card(ckpt, table, err, params))
+        out = Path(args.out)
+        (out / "MODEL_CARD.md").write_text(model_card(ckpt, table, err, params, out))
         print(json.dumps(table, indent=1))
     return 0
 

@@ -140,7 +140,8 @@ def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
             "history": history, "losses": losses, "steps": step,
             "train_seconds": round(time.time() - t0, 1),
             "data": {"tracks": len(tracks), "frames": int(sum(len(t.features) for t in tracks)),
-                     "texts": len(table.texts), "clips": sum(c.split == "train" for c in clips)}}
+                     "texts": len(table.texts),
+                     "clips": sum(c.split == "train" and not c.synthetic for c in clips)}}
 
 
 def main(argv: list[str] | None = None) -> int:
