@@ -29,6 +29,8 @@ from .segment_source import Cancelled, SegmentSource
 
 log = logging.getLogger(__name__)
 CHUNK = 40
+# A path drawn on the studio floor: world coordinates, its own size (the walk keeps its speed).
+DRAWN_PATH = {"anchor": "world", "scale_to_motion": False}
 __all__ = ["orchestrate", "OrchestratorConfig", "Outcome", "StageError", "Cancelled"]
 
 
@@ -91,7 +93,7 @@ def _trajectories(people: np.ndarray, plan: dict, trajectory: dict | None) -> in
         if trajectory is not None and int(trajectory.get("person", 0)) == p:
             if "points" in trajectory and trajectory["points"] is not None:
                 moved = apply_trajectory(people[p], np.asarray(trajectory["points"], float),
-                                         cfg=TrajectoryConfig(anchor="world"))
+                                         cfg=TrajectoryConfig(**DRAWN_PATH))
             else:
                 moved = apply_trajectory(people[p], {k: v for k, v in trajectory.items()
                                                      if k not in ("person", "points")})
@@ -162,7 +164,11 @@ def _review_segment(generator, source: SegmentSource, seg: dict, spam: bool, eva
 
     def apply(instr: dict, people: list[np.ndarray], s: int) -> list[np.ndarray]:
         kind = instr["kind"]
-        if kind == "regenerate" and not spam and seg.get("retrieval") is not None:
+        if kind in ("regenerate", "edit_part") and not spam and seg.get("retrieval") is not None:
+            # Retrieval cannot edit a part: it re-draws the segment's captures instead, and the
+            # reviewer keeps the new draw only if it is better.
+            if kind == "edit_part":
+                instr["via"] = "regenerate"
             other, frames = source.redraw(i, s)
             calls.append(other)
             return frames

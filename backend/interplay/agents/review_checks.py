@@ -41,7 +41,7 @@ CONTACT_VERBS = re.compile(r"\b(shak\w* hands?|handshake|high[- ]?fives?|hug\w*|
                            r"slap\w*|touch\w*|carr(y|ies))\b", re.I)
 # Metrics the correction loop must not make worse (lower is better for each).
 WATCHED = ("bone_deviation", "com_lean", "skating_ratio", "foot_skating", "ground_penetration",
-           "intersection_frequency", "intersection_volume")
+           "floating", "intersection_frequency", "intersection_volume")
 
 
 @dataclass(frozen=True)
@@ -134,7 +134,8 @@ def worse(before: dict, after: dict, tolerance: float = 0.1, floor: dict | None 
     """Watched metrics that got worse by more than `tolerance` (relative) plus an absolute
     floor per metric (so noise on a near-zero value is not "worse")."""
     floor = floor or {"bone_deviation": 0.002, "com_lean": 0.05, "skating_ratio": 0.02, "foot_skating": 0.02,
-                      "ground_penetration": 0.005, "intersection_frequency": 0.02,
+                      "ground_penetration": 0.005, "floating": 0.005,
+                      "intersection_frequency": 0.02,
                       "intersection_volume": 50.0}
     out = []
     for k in WATCHED:

@@ -121,9 +121,11 @@ def review(segment_plan, joints, evaluator=None, encoder=None, round: int = 0) -
             instructions.append({"kind": "edit_part", "part": part, "prompt": planned,
                                  "reason": f"the plan says '{planned}', the caption says '{said}'"})
     base = seg.get("base") or seg["prompt"]
-    body_ok = None
-    if any(re.search(p, base.lower()) for p, _ in BODY_CUES):
-        body_ok, _ = confirms(base, [t for c, _ in captioned for t in c["body"]], BODY_CUES)
+    body_ok, bodies = None, [t for c, _ in captioned for t in c["body"]]
+    # The body caption may show the base ("stands") or the whole step ("kicks"): either counts.
+    for text in dict.fromkeys((base, seg["prompt"])):
+        if any(re.search(p, text.lower()) for p, _ in BODY_CUES):
+            body_ok = body_ok or confirms(text, bodies, BODY_CUES)[0]
     checks: Checks = commonsense(people, seg["prompt"])
     regenerate = None
     if body_ok is False:

@@ -42,6 +42,7 @@ def edit_joints(generator, people: list[np.ndarray], plan: dict | None, prompt: 
 def follow_path(people: list[np.ndarray], trajectory: dict) -> list[np.ndarray]:
     """`people` with person `trajectory["person"]` walking the drawn points (world, metres) or
     the preset shape (placed at the person's start, facing as they do)."""
+    from ..agents.orchestrator import DRAWN_PATH
     from ..agents.trajectory import TrajectoryConfig, apply_trajectory
     person = int(trajectory.get("person", 0))
     if not 0 <= person < len(people):
@@ -50,7 +51,7 @@ def follow_path(people: list[np.ndarray], trajectory: dict) -> list[np.ndarray]:
     joints = np.asarray(people[person], dtype=np.float64)
     if trajectory.get("points") is not None:
         moved = apply_trajectory(joints, np.asarray(trajectory["points"], dtype=np.float64),
-                                 cfg=TrajectoryConfig(anchor="world"))
+                                 cfg=TrajectoryConfig(**DRAWN_PATH))
     else:
         moved = apply_trajectory(joints, {k: v for k, v in trajectory.items() if k != "person"})
     out = [np.asarray(p, dtype=np.float32) for p in people]
