@@ -87,33 +87,88 @@ def _frames(text: str) -> list[int]:
     return [a, b]
 
 
+def _trajectory_arg(value: str, person: int) -> dict:
+    """--trajectory: a preset shape name (circle, zigzag, …) or a JSON file with the drawn
+    points ([[x, z], …] metres) or a {"points": …} / {"shape": …, …} object; validated as the
+    API validates it."""
+    from pydantic import ValidationError
+
+    from .agents.plan_schema import readable
+    from .api.schemas import TrajectoryIn
+    path = Path(value)
+    if value.endswith(".json") or path.is_file():
+        try:
+            data = json.loads(path.read_text())
+        except (OSError, ValueError) as exc:
+            raise CliError(f"--trajectory {value}: {exc}") from None
+        data = {"points": data} if isinstance(data, list) else data
+        if not isinstance(data, dict):
+            raise CliError(f"--trajectory {value}: expected a list of points or an object")
+    else:
+        data = {"shape": value}
+    try:
+        return TrajectoryIn.model_validate({"person": person, **data}).plain()
+    except ValidationError as exc:
+        raise CliError(f"--trajectory: {readable(exc)}") from None
+
+
 def cmd_edit(args) -> int:
     from .agents.generator import load_generator
     from .agents.spam_generator import EditUnavailable, resolve_edit_part
-    from .api.edits import edit_joints
+    from .api.edits import edit_joints, follow_path
     from .api.motion_json import plain
+    from .motion.metrics import clip_metrics
     from .motion.motion import Motion
     from .settings import get_settings
     motion = _read_motion(args.motion)
-    if not args.prompt.strip():
+    if args.prompt is None and args.trajectory is None:
+        raise CliError("give --prompt, --trajectory or both")
+    if args.prompt is not None and not args.prompt.strip():
         raise CliError("--prompt must not be empty")
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
+    trajectory = _trajectory_arg(args.trajectory, args.person) if args.trajectory else None
+    people, plan, seed, said = motion.people, motion.plan, motion.seed, []
     try:
-        resolve_edit_part(args.part)
-        settings = get_settings()
-        generator = load_generator(settings.data_dir, settings.spam_dir)
-        joints, plan, metrics, seed = edit_joints(
-            generator, motion.people, motion.plan, motion.prompt, args.part, args.prompt,
-            args.frames, args.seed)
+        if args.prompt is not None:
+            resolve_edit_part(args.part)
+            settings = get_settings()
+            generator = load_generator(settings.data_dir, settings.spam_dir)
+            joints, plan, _, seed = edit_joints(
+                generator, motion.people, motion.plan, motion.prompt, args.part, args.prompt,
+                args.frames, args.seed)
+            people = [joints]
+            edit = plan["edits"][-1]
+            said.append(f"{edit['part']} frames {edit['frames'][0]}:{edit['frames'][1]}, seed "
+                        f"{seed}, untouched joints moved {edit['untouched_change_cm']:.2f} cm")
+        if trajectory is not None:
+            people = follow_path(people, trajectory)
+            plan = dict(plan or {})
+            plan["edits"] = list(plan.get("edits") or []) + [{"trajectory": trajectory}]
+            what = trajectory.get("shape") or f"{len(trajectory['points'])} drawn points"
+            said.append(f"person {trajectory['person']} follows {what}")
     except (ValueError, EditUnavailable) as exc:
         raise CliError(str(exc)) from None
-    out = Motion(people=[joints], plan=plan, metrics=metrics, prompt=motion.prompt, seed=seed)
+    metrics = clip_metrics([p.astype("float64") for p in people])
+    out = Motion(people=people, plan=plan, metrics=metrics, prompt=motion.prompt, seed=seed)
     _write(args.out, json.dumps(plain(out.to_json()), separators=(",", ":")))
-    edit = plan["edits"][-1]
-    print(f"wrote {args.out}: {edit['part']} frames {edit['frames'][0]}:{edit['frames'][1]}, "
-          f"seed {seed}, untouched joints moved {edit['untouched_change_cm']:.2f} cm",
-          file=sys.stderr)
+    print(f"wrote {args.out}: {'; '.join(said)}", file=sys.stderr)
+    return 0
+
+
+def cmd_review_eval(args) -> int:
+    """The reviewer before/after its correction rounds on CoMA's 40 Table 8 prompts."""
+    from .agents.generator import load_generator
+    from .agents.review_eval import format_table, run, table8_prompts
+    from .settings import get_settings
+    if args.limit is not None and args.limit < 1:
+        raise CliError("--limit must be at least 1")
+    settings = get_settings()
+    generator = load_generator(settings.data_dir, settings.spam_dir)
+    prompts = table8_prompts()[:args.limit]
+    report = run(generator, prompts, seconds=args.seconds, rounds=args.rounds,
+                 log=lambda m: print(m, file=sys.stderr))
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
     return 0
 
 
@@ -248,11 +303,22 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("motion", help="motion JSON file to edit")
     p.add_argument("--part", default="whole_body", help="left_arm, right_arm, left_leg, "
                    "right_leg, whole_body (default) or a model part such as left_upper")
-    p.add_argument("--prompt", required=True, help="what the edited part does")
+    p.add_argument("--prompt", help="what the edited part does (optional with --trajectory)")
     p.add_argument("--frames", type=_frames, help="a:b — edit frames a … b−1 only")
     p.add_argument("--seed", type=int)
+    p.add_argument("--trajectory", help="a preset shape (circle, zigzag, heart, …) or a JSON "
+                   "file of drawn points [[x, z], …] (metres, world) for the person to follow")
+    p.add_argument("--person", type=int, default=0, help="who follows --trajectory (default 0)")
     p.add_argument("--out", required=True, help="motion JSON file to write")
     p.set_defaults(func=cmd_edit)
+
+    p = sub.add_parser("review-eval", help="the reviewer before/after its correction rounds on "
+                       "CoMA's 40 Table 8 prompts (alignment, confirmed part edits, metrics)")
+    p.add_argument("--json", action="store_true", help="the full report as JSON")
+    p.add_argument("--limit", type=int, help="only the first N prompts")
+    p.add_argument("--seconds", type=float, default=8.0, help="length per prompt (default 8)")
+    p.add_argument("--rounds", type=int, default=2, help="K review rounds (default 2)")
+    p.set_defaults(func=cmd_review_eval)
 
     p = sub.add_parser("plan", help="the planner's plan for a prompt (segments, part edits, "
                        "trajectories, durations) without generating")
