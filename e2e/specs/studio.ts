@@ -27,7 +27,18 @@ interface BvhSummary {
 
 declare global {
   interface Window {
-    __interplay: HookSnapshot & { parseBvh(text: string): Promise<BvhSummary> };
+    __interplay: HookSnapshot & {
+      parseBvh(text: string): Promise<BvhSummary>;
+      path: { person: number; points: [number, number][] };
+      versions: { ids: string[]; index: number };
+      selected: { person: number; part: string } | null;
+      range: [number, number] | null;
+      playing: boolean;
+      agentReviews: number;
+      project(person: number, joint: number): [number, number] | null;
+      groundAt(x: number, y: number): [number, number] | null;
+      projectPoint(x: number, y: number, z: number): [number, number] | null;
+    };
   }
 }
 
@@ -122,4 +133,29 @@ export async function pixelDifference(page: Page, a: Buffer, b: Buffer): Promise
     },
     [a.toString("base64"), b.toString("base64")],
   );
+}
+
+/** Drag the mouse along ground points (world x, z) on the viewport, as a user draws. */
+export async function drawOnGround(page: Page, points: [number, number][], stepsPerLeg = 8): Promise<void> {
+  const screen = await page.evaluate(
+    (pts) => pts.map(([x, z]) => window.__interplay.projectPoint(x, 0, z)!),
+    points,
+  );
+  await page.mouse.move(screen[0][0], screen[0][1]);
+  await page.mouse.down();
+  for (let i = 1; i < screen.length; i++) await page.mouse.move(screen[i][0], screen[i][1], { steps: stepsPerLeg });
+  await page.mouse.up();
+}
+
+/** A stored motion from the API. */
+export async function motionOf(page: Page, id: string, base = ""): Promise<{
+  id: string;
+  parent_id: string | null;
+  people: { joints: number[][][] }[];
+  highlights: { penetration: unknown[][]; min_distance: number[] | null } | null;
+  plan: Record<string, unknown>;
+}> {
+  const res = await page.request.get(`${base}/api/motions/${id}`);
+  expect(res.ok()).toBe(true);
+  return res.json();
 }

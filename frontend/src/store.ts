@@ -25,6 +25,12 @@ export const pointer: { hover: { person: number; part: EditPart } | null; drawin
   version: 0,
 };
 
+/** Set by the viewport: where a world point appears on screen (client pixels), for the test hook. */
+export const sceneProbe: { project: ((x: number, y: number, z: number) => [number, number]) | null; ground: ((cx: number, cy: number) => [number, number] | null) | null } = {
+  project: null,
+  ground: null,
+};
+
 export type Persons = 1 | 2;
 export type Tool = "view" | "path" | "part";
 export type Theme = "dark" | "light";

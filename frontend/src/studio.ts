@@ -3,7 +3,7 @@
 // re-runs are in directing/actions.ts.
 import { ApiError, cancelJob, createJob, getHistory, getMotion, getSkeleton, motionIdFromPath } from "./api/client";
 import { openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
-import { initialAgent } from "./api/agent";
+import { agentFromReview } from "./api/agent";
 import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
 import { fromHistory, moveTo } from "./directing/versions";
 import { FPS, frames, playhead, useStudio } from "./store";
@@ -108,7 +108,7 @@ export function showMotion(motion: Motion): void {
       metrics: motion.metrics,
       motionId: motion.id,
       error: null,
-      agent: initialAgent,
+      agent: agentFromReview(motion.review),
       jobId: null,
       cancelled: false,
     },

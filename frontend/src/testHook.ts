@@ -1,5 +1,5 @@
 // `window.__interplay`: a tiny read-only view of the studio for the end-to-end tests.
-import { FPS, frames, renderStats, useStudio } from "./store";
+import { FPS, frames, renderStats, sceneProbe, useStudio } from "./store";
 
 export interface BvhSummary {
   bones: number;
@@ -21,6 +21,19 @@ export interface InterplayTestHook {
   readonly renderCount: number;
   /** "full" or "light" (software WebGL: no MSAA, blob shadows). */
   readonly quality: string;
+  /** The drawn / preset path ([x, z] points) and who follows it. */
+  readonly path: { person: number; points: [number, number][] };
+  readonly versions: { ids: string[]; index: number };
+  readonly selected: { person: number; part: string } | null;
+  readonly range: [number, number] | null;
+  readonly playing: boolean;
+  readonly agentReviews: number;
+  /** Screen position (client px) of joint j of person p at the frame shown, or null. */
+  project(person: number, joint: number): [number, number] | null;
+  /** Screen position (client px) of a world point, or null before the viewport exists. */
+  projectPoint(x: number, y: number, z: number): [number, number] | null;
+  /** Ground point [x, z] under a client position, or null. */
+  groundAt(x: number, y: number): [number, number] | null;
   /** Parse BVH text with three.js's BVHLoader (loaded on demand) and summarise its skeleton. */
   parseBvh(text: string): Promise<BvhSummary>;
 }
@@ -70,6 +83,37 @@ export function installTestHook(target: Window = window): void {
     },
     get quality() {
       return renderStats.quality;
+    },
+    get path() {
+      const p = useStudio.getState().path;
+      return { person: p.person, points: p.points };
+    },
+    get versions() {
+      return useStudio.getState().versions;
+    },
+    get selected() {
+      return useStudio.getState().selected;
+    },
+    get range() {
+      return useStudio.getState().range;
+    },
+    get playing() {
+      return useStudio.getState().playing;
+    },
+    get agentReviews() {
+      return Object.values(useStudio.getState().stream.agent).reduce((n, s) => n + s.reviews.length, 0);
+    },
+    project(person, joint) {
+      const t = useStudio.getState().frame;
+      if (!sceneProbe.project || person >= frames.persons || t >= frames.received) return null;
+      const f = frames.frame(person, t);
+      return sceneProbe.project(f[3 * joint], f[3 * joint + 1], f[3 * joint + 2]);
+    },
+    projectPoint(x, y, z) {
+      return sceneProbe.project ? sceneProbe.project(x, y, z) : null;
+    },
+    groundAt(x, y) {
+      return sceneProbe.ground ? sceneProbe.ground(x, y) : null;
     },
     parseBvh,
   };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { describeInstruction, initialAgent, reduceAgent } from "./agent";
+import { agentFromReview, describeInstruction, initialAgent, reduceAgent } from "./agent";
 import { reduceStream, startStream } from "./stream";
 import type { StreamEvent } from "./types";
 
@@ -69,5 +69,24 @@ describe("reduceAgent", () => {
       "edit left_arm: wave (frames 10–30)",
     );
     expect(describeInstruction({ kind: "regenerate" })).toBe("regenerate");
+  });
+});
+
+describe("agentFromReview", () => {
+  it("replays a stored review into the timeline state", () => {
+    const review = {
+      rounds: 2,
+      segments: [
+        {
+          segment: 0,
+          reviews: [{ segment: 0, round: 0, captions: { body: "walks" }, score: 0.85, instructions: [], verdict: "ok" }],
+          corrections: [],
+        },
+      ],
+    };
+    const a = agentFromReview(review);
+    expect(a[0].status).toBe("done");
+    expect(a[0].reviews[0]).toMatchObject({ round: 0, score: 0.85, verdict: "ok", captions: { body: "walks" } });
+    expect(agentFromReview(null)).toEqual({});
   });
 });

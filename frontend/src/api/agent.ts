@@ -76,3 +76,22 @@ export function describeInstruction(i: Instruction): string {
   const span = i.frames ? ` (frames ${i.frames[0]}–${i.frames[1]})` : "";
   return `${head}${what}${span}`;
 }
+
+interface StoredReview {
+  segments?: { segment: number; reviews?: unknown[]; corrections?: unknown[] }[];
+}
+
+/** The agent timeline of a stored motion (its `review`: the rounds per segment), replayed
+ * through the same reducer as the live events. */
+export function agentFromReview(review: unknown): AgentState {
+  const segs = (review as StoredReview | null)?.segments;
+  if (!Array.isArray(segs)) return initialAgent;
+  let state = initialAgent;
+  for (const seg of segs) {
+    state = reduceAgent(state, { type: "segment", index: seg.segment, status: "done" });
+    for (const r of seg.reviews ?? []) state = reduceAgent(state, { type: "review", ...(r as object), segment: seg.segment } as StreamEvent);
+    for (const c of seg.corrections ?? [])
+      state = reduceAgent(state, { type: "correction", ...(c as object), segment: seg.segment } as StreamEvent);
+  }
+  return state;
+}

@@ -102,6 +102,8 @@ export interface Motion {
   created_at: string;
   parent_id?: string | null;
   edit?: EditInfo | null;
+  /** The reviewer's rounds per segment ({segments: [{segment, reviews, corrections}]}). */
+  review?: unknown;
 }
 
 export interface Skeleton {

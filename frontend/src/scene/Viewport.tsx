@@ -5,7 +5,9 @@ import { useEffect, useRef } from "react";
 import { advance, frameIndex } from "../playback/timeline";
 import { FPS, frames, playhead, renderStats, useStudio } from "../store";
 import { jointsOfPart } from "../directing/parts";
-import { pointer } from "../store";
+import { Vector3 } from "three";
+import { pointer, sceneProbe } from "../store";
+import { Picker } from "./Picker";
 import { attachPointer } from "./interaction";
 import { detectQuality } from "./quality";
 import { Stage } from "./Stage";
@@ -24,6 +26,13 @@ export function Viewport() {
     fit();
 
     const detach = attachPointer(stage, canvas);
+    sceneProbe.project = (x, y, z) => {
+      const v = new Vector3(x, y, z).project(stage.camera);
+      const r = canvas.getBoundingClientRect();
+      return [r.left + ((v.x + 1) / 2) * r.width, r.top + ((1 - v.y) / 2) * r.height];
+    };
+    const picker = new Picker(canvas, stage.camera);
+    sceneProbe.ground = (cx, cy) => picker.ground(cx, cy);
     let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1 };
     let generation = -1; // which FrameBuffer contents the mannequins were built for
     let drawn = { frame: -1, version: -1 };
@@ -82,6 +91,7 @@ export function Viewport() {
     return () => {
       cancelAnimationFrame(raf);
       detach();
+      sceneProbe.project = sceneProbe.ground = null;
       observer.disconnect();
       stage.dispose();
     };
