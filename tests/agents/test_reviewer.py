@@ -83,17 +83,17 @@ def test_handshake_without_a_touch_is_missing_contact(clips):
 
 def test_correction_loop_keeps_improvements_and_stops_when_worse(clips):
     walk = _clip(clips, "walk").people[0][:80]
-    seg = _segment("a person lies down on the floor", 80)
-    lie = _clip(clips, "lieDownFloor").people[0][:80]
+    seg = _segment("a person squats", 80)
+    squat = _clip(clips, "squat1Reps").people[0][:80]   # what the plan asks for
     events = []
 
     def better(instr, people, seed):
-        return [lie.astype(np.float64)]
+        return [squat.astype(np.float64)]
 
     out = correct(seg, [walk], better, rounds=2, emit=events.append)
     assert out.first.body_confirmed is False and out.last.body_confirmed is True
     assert out.corrections[0]["accepted"] and out.corrections[0]["score_after"] >= out.first.score
-    assert np.array_equal(out.people[0], lie)
+    assert np.array_equal(out.people[0], squat)
     assert [e["type"] for e in events][:2] == ["review", "correction"]
 
     def sink(instr, people, seed):
