@@ -111,7 +111,8 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
     if m["skating_ratio"] > SKATING_RATIO:
         failed["foot_skating"] = f"planted feet slide in {m['skating_ratio']:.0%} of the frames"
     if m["ground_penetration"] > PENETRATION_M:
-        failed["ground_penetration"] = f"the body is {m['ground_penetration'] * 100:.1f} cm under the floor"
+        failed["ground_penetration"] = (f"the body is {m['ground_penetration'] * 100:.1f} cm "
+                                        "under the floor")
     windows = []
     for p in people:
         speed, plant = mt.foot_skating(p, fps)
@@ -121,8 +122,9 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
         windows += _windows(mt.ground_penetration(p) > PENETRATION_FRAME_M, "ground penetration", t)
     if len(people) == 2 and not wants_contact(text):   # a touch is expected to overlap
         if m["intersection_frequency"] > INTERSECTION_FREQ:
-            failed["penetration"] = (f"the two bodies intersect in {m['intersection_frequency']:.0%}"
-                                     f" of the frames ({m['intersection_volume']:.0f} cm³ a frame)")
+            failed["penetration"] = (f"the two bodies intersect in "
+                                     f"{m['intersection_frequency']:.0%} of the frames "
+                                     f"({m['intersection_volume']:.0f} cm³ a frame)")
         windows += _windows(mt.pair_geometry(*people)["overlap"], "body intersection", t)
     if len(people) == 2 and wants_contact(text) and m["contact_frames"] == 0:
         failed["missing_contact"] = (f"'{CONTACT_VERBS.search(text).group(0)}' needs a touch, "
@@ -130,10 +132,12 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
     return Checks(metrics=m, failed=failed, windows=_merge(windows))
 
 
-def worse(before: dict, after: dict, tolerance: float = 0.1, floor: dict | None = None) -> list[str]:
+def worse(before: dict, after: dict, tolerance: float = 0.1,
+          floor: dict | None = None) -> list[str]:
     """Watched metrics that got worse by more than `tolerance` (relative) plus an absolute
     floor per metric (so noise on a near-zero value is not "worse")."""
-    floor = floor or {"bone_deviation": 0.002, "com_lean": 0.05, "skating_ratio": 0.02, "foot_skating": 0.02,
+    floor = floor or {"bone_deviation": 0.002, "com_lean": 0.05, "skating_ratio": 0.02,
+                      "foot_skating": 0.02,
                       "ground_penetration": 0.005, "floating": 0.005,
                       "intersection_frequency": 0.02,
                       "intersection_volume": 50.0}

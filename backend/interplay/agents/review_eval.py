@@ -58,8 +58,8 @@ def run(generator, prompts: list[dict], seconds: float = 8.0, rounds: int = 2,
                      "instructions": [i["kind"] for r in first for i in r["instructions"]],
                      "applied": sum(c["score_after"] is not None for c in corr),
                      "accepted": sum(c["accepted"] for c in corr)})
-        log(f"{item['id']:>2} {rows[-1]['before']['score']:.3f} → {rows[-1]['after']['score']:.3f}"
-            f"  {item['prompt'][:60]}")
+        before, after = rows[-1]["before"]["score"], rows[-1]["after"]["score"]
+        log(f"{item['id']:>2} {before:.3f} → {after:.3f}  {item['prompt'][:60]}")
     return {"prompts": len(rows), "seconds": seconds, "rounds": rounds,
             "generator": sorted({r["generator"] for r in rows}),
             "generator_reason": getattr(generator, "reason", None),
@@ -94,7 +94,8 @@ def format_table(report: dict) -> str:
              f"{'':28}{'before':>12}{'after':>12}"]
     for k in ("score", "confirmed_share", "failed_checks_per_segment", *METRICS):
         b, a = t["before"][k], t["after"][k]
-        lines.append(f"{k:28}{'—' if b is None else f'{b:.4f}':>12}{'—' if a is None else f'{a:.4f}':>12}")
+        cells = ["—" if v is None else f"{v:.4f}" for v in (b, a)]
+        lines.append(f"{k:28}{cells[0]:>12}{cells[1]:>12}")
     lines.append(f"instructions (first review): {t['instructions']}; corrections applied "
                  f"{t['corrections_applied']}, accepted {t['corrections_accepted']}")
     return "\n".join(lines)

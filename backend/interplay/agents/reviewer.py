@@ -207,7 +207,8 @@ def correct(segment_plan, joints, apply: Callable, evaluator=None, rounds: int =
             event["score_after"] = after.score
             if after.score + SCORE_EPS >= current.score and not worse_keys:
                 event["accepted"] = True
-                people, current, changed = [np.asarray(p, np.float64) for p in candidate], after, True
+                people = [np.asarray(p, np.float64) for p in candidate]
+                current, changed = after, True
             else:
                 event["reason"] = ("the score dropped" if after.score + SCORE_EPS < current.score
                                    else f"worse {', '.join(worse_keys)}")

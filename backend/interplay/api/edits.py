@@ -67,7 +67,8 @@ def edit_stored(repo: MotionRepository, generator, parent: StoredMotion, part: s
     it ({part, prompt, frames, trajectory})."""
     if prompt is None and trajectory is None:
         raise ValueError("an edit needs a prompt, a trajectory or both")
-    people, plan, seed_out = [np.asarray(p, np.float32) for p in parent.people], parent.plan, parent.seed
+    people = [np.asarray(p, np.float32) for p in parent.people]
+    plan, seed_out = parent.plan, parent.seed
     if prompt is not None:
         joints, plan, _, seed_out = edit_joints(generator, parent.people, parent.plan,
                                                 parent.prompt, part, prompt, frames, seed)

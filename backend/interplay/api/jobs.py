@@ -2,7 +2,8 @@
 events to a buffer, so a WebSocket that connects late still replays everything from the start.
 
 Events, in order (see docs/api.md and docs/review.md):
-    plan → (segment, (frames, highlights)*, review, correction*, …, segment)* → metrics → done
+    plan → (segment, (frames, highlights)*, review, correction*, …, segment)* → metrics
+    → done
     or, on failure or cancellation, … → error (with `stage`, or `cancelled: true`).
 The work itself is CoMA's Algorithm 1 in agents/orchestrator.py; this module runs it in a
 thread, turns its frames into events and stores the result.
@@ -195,8 +196,8 @@ class JobManager:
             job.status = "done"
         except Cancelled:
             job.status = "failed"
-            job.push({"type": "error", "message": "cancelled", "cancelled": True}
-                     if job.cancelled else {"type": "error", "message": "the server is shutting down"})
+            job.push({"type": "error", "message": "cancelled", "cancelled": True} if job.cancelled
+                     else {"type": "error", "message": "the server is shutting down"})
         except StageError as exc:
             job.status = "failed"
             job.push({"type": "error", "stage": exc.stage,
