@@ -11,12 +11,12 @@ FRONT_SRC := $(shell find frontend/src frontend/index.html frontend/vite.config.
 HOST ?= 127.0.0.1
 PORT ?= 8000
 
-.PHONY: run test install test-py test-front test-e2e frontend data train train-smoke chromium clean
+.PHONY: run test install test-py test-front test-e2e frontend data train train-deps train-smoke chromium clean
 
 run: install frontend/dist/index.html
 	$(BIN)/interplay serve --host $(HOST) --port $(PORT)
 
-test: install frontend/dist/index.html chromium
+test: install train-deps frontend/dist/index.html chromium
 	$(MAKE) test-py test-front test-e2e
 
 install: $(PY_STAMP) $(NPM_STAMP)
@@ -45,6 +45,23 @@ test-front:
 
 test-e2e:
 	npm test --workspace e2e
+
+# The [train] extra (torch, onnx): the model tests run with it, `make train` needs it.
+TRAIN_STAMP := $(VENV)/.train-installed-$(shell cat pyproject.toml | md5sum | cut -c1-12)
+train-deps: $(TRAIN_STAMP)
+
+$(TRAIN_STAMP): $(PY_STAMP)
+	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev,train]'
+	rm -f $(VENV)/.train-installed-* && touch $@
+
+# Retrain every single-person model from models/data (≤ 60 min on 2 cores), export ONNX to
+# models/weights/, write the model cards.
+train: install train-deps
+	$(BIN)/python -m models.train_all
+
+# Seconds-long training of tiny configs on a few real clips (also part of `make test`).
+train-smoke: install train-deps
+	$(BIN)/python -m pytest -q tests/models/test_spam_smoke.py
 
 # Rebuild the processed data set from ../shared/data (not needed to run or test the app).
 data: install

@@ -70,8 +70,6 @@ class TrainConfig:
     batch: int = 64
     lr: float = 2e-4
     warmup: int = 200
-    window: int = 64              # VQ training window, frames (multiple of 4)
-    min_tokens: int = 10          # transformer windows: 10..max_tokens tokens
     part_prompt_share: float = 0.5  # share of samples with per-part caption prompts
     cond_drop: float = 0.1        # classifier-free guidance dropout
     seed: int = 0
@@ -95,10 +93,12 @@ def from_dict(cls, d: dict):
 
 
 def runtime_config(vq: VQConfig, base: TransformerConfig,
-                   sampling: SamplingDefaults | None = None) -> dict:
-    """The config.json next to the ONNX graphs: what the numpy sampling loops need."""
+                   sampling: SamplingDefaults | None = None, trained: bool = True) -> dict:
+    """The config.json next to the ONNX graphs: what the numpy sampling loops need
+    ("trained": false marks placeholder exports the runtime must not serve)."""
     sampling = sampling or SamplingDefaults()
     return {
+        "trained": trained,
         "K": vq.codes, "Q": vq.layers, "d": base.d, "latent": vq.latent,
         "max_tokens": base.max_tokens, "mask_id": base.mask_id, "downsample": vq.downsample,
         "feature_dim": FEATURE_DIM, "text_dim": base.text_dim, "parts": list(PARTS),

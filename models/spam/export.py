@@ -112,7 +112,7 @@ def export_graph(module: nn.Module, name: str, inputs: tuple, out_dir: Path) -> 
 
 def export_all(vq: RVQVAE, base: SPAMTransformer, residual: SPAMTransformer,
                normalizer: Normalizer, out_dir: str | Path,
-               sampling: SamplingDefaults | None = None) -> Path:
+               sampling: SamplingDefaults | None = None, trained: bool = True) -> Path:
     """Write the four graphs, normalizer.npz and config.json to out_dir."""
     if not vq.cfg.parts:
         raise ValueError("only the 4-part VQ has the (B, 4, Q, n) contract")
@@ -130,7 +130,7 @@ def export_all(vq: RVQVAE, base: SPAMTransformer, residual: SPAMTransformer,
         export_graph(module, name, inputs[name], out_dir)
     normalizer.save(out_dir / "normalizer.npz")
     (out_dir / "config.json").write_text(
-        json.dumps(runtime_config(vq.cfg, base.cfg, sampling), indent=1) + "\n")
+        json.dumps(runtime_config(vq.cfg, base.cfg, sampling, trained), indent=1) + "\n")
     return out_dir
 
 
