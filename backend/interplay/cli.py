@@ -1,4 +1,5 @@
-"""The `interplay` command: serve, generate, edit, metrics, export, bench, eval, data build.
+"""The `interplay` command: serve, generate, edit, react, metrics, export, bench, eval,
+eval-react, data build.
 
 Bad files or arguments exit with code 2 and a one-line message on stderr."""
 
@@ -239,13 +240,17 @@ def cmd_bench(args) -> int:
     from .bench_model import format_model_table, run_model_bench
     from .settings import get_settings
     report = {}
-    if args.only != "model":
+    if args.only not in ("model", "reaction"):
         report = run_bench(runs=args.runs, seconds=args.seconds, warmup=args.warmup)
-    if args.only != "api":
+    if args.only not in ("api", "reaction"):
         report["model"] = run_model_bench(get_settings().spam_dir, runs=args.runs,
                                           warmup=args.warmup)
-    tables = ([format_table(report)] if args.only != "model" else []) + (
-        [format_model_table(report["model"])] if args.only != "api" else [])
+    tables = ([format_table(report)] if args.only not in ("model", "reaction") else []) + (
+        [format_model_table(report["model"])] if args.only not in ("api", "reaction") else [])
+    if args.only in (None, "reaction"):
+        from .bench_reaction import format_reaction_table, run_reaction_bench
+        report["reaction"] = run_reaction_bench()
+        tables.append(format_reaction_table(report["reaction"]))
     print(json.dumps(report, indent=1) if args.json else "\n\n".join(tables))
     return 0
 
@@ -268,6 +273,30 @@ def cmd_eval(args) -> int:
         cfg = EvalConfig(repeats=args.repeats, seed=args.seed)
         report = run_eval(rows, cfg, log=lambda m: print(m, file=sys.stderr))
     except (ValueError, FileNotFoundError) as exc:
+        raise CliError(str(exc)) from None
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
+def cmd_react(args) -> int:
+    """A reactor (ARFlow, online) for person 0 of a motion file → a two-person motion file."""
+    from .agents.reaction_cli import react_file
+    try:
+        text, summary = react_file(_read_motion(args.actor), args.prompt, args.seed,
+                                   guidance=not args.no_guidance)
+    except (FileNotFoundError, ValueError) as exc:
+        raise CliError(str(exc)) from None
+    _write(args.out, text)
+    print(f"wrote {args.out}: {summary}", file=sys.stderr)
+    return 0
+
+
+def cmd_eval_react(args) -> int:
+    from .agents.reaction_eval import ROWS, format_table, run_eval_react
+    try:
+        report = run_eval_react(ROWS, repeats=args.repeats, seed=args.seed,
+                                log=lambda m: print(m, file=sys.stderr))
+    except (FileNotFoundError, ValueError) as exc:
         raise CliError(str(exc)) from None
     print(json.dumps(report, indent=1) if args.json else format_table(report))
     return 0
@@ -346,8 +375,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--runs", type=int, default=3, help="timed jobs per person count (default 3)")
     p.add_argument("--seconds", type=_seconds, default=6.0, help="motion length (default 6)")
     p.add_argument("--warmup", type=int, default=1, help="untimed jobs first (default 1)")
-    p.add_argument("--only", choices=("api", "model"), help="one section: jobs through the API, "
-                   "or SPAM on onnxruntime (default both)")
+    p.add_argument("--only", choices=("api", "model", "reaction"), help="one section: jobs "
+                   "through the API, SPAM on onnxruntime, or the ARFlow reactor (default all)")
     p.set_defaults(func=cmd_bench)
 
     p = sub.add_parser("eval", help="text-to-motion metrics (R-precision, FID, …) of every "
@@ -358,6 +387,22 @@ def build_parser() -> argparse.ArgumentParser:
                    "single_vq (default all; rows without weights are skipped)")
     p.add_argument("--seed", type=int, default=0)
     p.set_defaults(func=cmd_eval)
+
+    p = sub.add_parser("react", help="generate a reactor (ARFlow) for person 0 of a motion "
+                       "file, frame by frame; writes the pair")
+    p.add_argument("actor", help="motion JSON whose person 0 is the actor")
+    p.add_argument("--out", required=True, help="two-person motion JSON to write")
+    p.add_argument("--prompt", help="optional intent, e.g. 'shake hands'")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--no-guidance", action="store_true", help="no penetration guidance")
+    p.set_defaults(func=cmd_react)
+
+    p = sub.add_parser("eval-react", help="ARFlow reactions on the test split's pairs: FID, "
+                       "IV, IF, contacts, skating without/with guidance and reprojection")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--repeats", type=int, default=2, help="sampling seeds per row (default 2)")
+    p.add_argument("--seed", type=int, default=0)
+    p.set_defaults(func=cmd_eval_react)
 
     p = sub.add_parser("data", help="processed data set: `interplay data build [options]`")
     p.add_argument("action", choices=("build",))

@@ -1,0 +1,102 @@
+"""Export ARFlow to ONNX for the numpy/onnxruntime runtime (`interplay.agents.reaction` reads
+this contract; keep names, dtypes and axes):
+
+  arflow.onnx  x_t (B, T, 66) f32 normalised flow state, t (B,) f32 flow time in [0, 1],
+               actor (B, T, 66) f32 normalised actor joints, text (B, 384) f32 (zeros: none)
+                                                            → x1 (B, T, 66) f32 predicted reaction
+  T ≤ config.json "window"; frame i of x1 depends on inputs at frames ≤ i only.
+
+plus normalizer.npz (mean, std (66,) over both people's joints, metres) and config.json.
+
+  python -m models.arflow.export --ckpt var/arflow --out models/weights/arflow
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import shutil
+import warnings
+from pathlib import Path
+
+import numpy as np
+import torch
+
+from .config import POSE_DIM, TEXT_DIM, ARFlowConfig, from_dict
+from .model import ARFlow
+
+ROOT = Path(__file__).resolve().parents[2]
+WEIGHTS = ROOT / "models" / "weights" / "arflow"
+OPSET = 17
+# Sampling defaults shipped with the graph (runtime may override): Euler steps, guidance
+# strength (metres of step per unit penetration gradient), safe distance (m), reprojection
+# weight γ on the predicted initial point, stochastic strength η.
+SAMPLING = {"steps": 5, "guidance": 0.3, "safe_distance": 0.06, "gamma": 0.5, "eta": 0.0,
+            "guidance_iters": 3, "rigid": 0.3}
+
+
+def load(ckpt_dir: Path) -> ARFlow:
+    ck = torch.load(Path(ckpt_dir) / "arflow.pt", map_location="cpu", weights_only=True)
+    model = ARFlow(from_dict(ARFlowConfig, ck["config"]))
+    model.load_state_dict(ck["model"])
+    return model.eval()
+
+
+def example_inputs(cfg: ARFlowConfig, batch: int = 2, frames: int = 7) -> tuple:
+    g = torch.Generator().manual_seed(0)
+    return (torch.randn(batch, frames, POSE_DIM, generator=g), torch.rand(batch, generator=g),
+            torch.randn(batch, frames, POSE_DIM, generator=g), torch.randn(batch, TEXT_DIM, generator=g))
+
+
+def export(ckpt_dir: Path, out: Path | None = None, sampling: dict | None = None) -> Path:
+    out = Path(out or WEIGHTS)
+    out.mkdir(parents=True, exist_ok=True)
+    model = load(ckpt_dir)
+    args = example_inputs(model.cfg)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torch.onnx.export(model, args, str(out / "arflow.onnx"),
+                          input_names=["x_t", "t", "actor", "text"], output_names=["x1"],
+                          dynamic_axes={"x_t": {0: "batch", 1: "frames"}, "t": {0: "batch"},
+                                        "actor": {0: "batch", 1: "frames"},
+                                        "text": {0: "batch"}, "x1": {0: "batch", 1: "frames"}},
+                          opset_version=OPSET, dynamo=False)
+    shutil.copy(Path(ckpt_dir) / "normalizer.npz", out / "normalizer.npz")
+    ck = torch.load(Path(ckpt_dir) / "arflow.pt", map_location="cpu", weights_only=True)
+    config = {"window": model.cfg.window, "pose_dim": POSE_DIM, "text_dim": TEXT_DIM,
+              "text": model.cfg.text, "noise": model.cfg.noise, "model": ck["config"],
+              "step": ck.get("step"), "val_loss": ck.get("val"),
+              "sampling": {**SAMPLING, **(sampling or {})}}
+    (out / "config.json").write_text(json.dumps(config, indent=1))
+    check(model, out / "arflow.onnx")
+    if (Path(ckpt_dir) / "train_summary.json").exists():
+        from .card import write_card
+        write_card(out, ckpt_dir)
+    return out
+
+
+def check(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
+    """Max |ONNX − torch| on a fresh input of another batch/length (dynamic axes); raises if > tol."""
+    import onnxruntime as ort
+
+    sess = ort.InferenceSession(str(path), providers=["CPUExecutionProvider"])
+    args = example_inputs(model.cfg, batch=3, frames=min(11, model.cfg.window))
+    with torch.no_grad():
+        ref = model(*args).numpy()
+    got = sess.run(["x1"], dict(zip(["x_t", "t", "actor", "text"], (a.numpy() for a in args))))[0]
+    err = float(np.abs(got - ref).max())
+    if err > tol:
+        raise RuntimeError(f"ONNX export differs from torch by {err:.2e}")
+    return err
+
+
+def main(argv: list[str] | None = None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("--ckpt", type=Path, default=ROOT / "var" / "arflow")
+    ap.add_argument("--out", type=Path, default=WEIGHTS)
+    args = ap.parse_args(argv)
+    print(export(args.ckpt, args.out))
+
+
+if __name__ == "__main__":
+    main()
