@@ -27,7 +27,10 @@ for (const size of [
     await openStudio(page, `/m/${motionId}`);
     await page.waitForFunction(() => window.__interplay.phase === "done");
     expect((await hook(page)).persons).toBe(2);
-    for (const id of ["prompt", "persons-2", "seconds", "generate", "viewport", "play", "scrubber", "legend", "metrics"]) {
+    for (const id of [
+      "prompt", "persons-2", "seconds", "generate", "viewport", "play", "scrubber", "legend", "metrics",
+      "tool-path", "tool-part", "undo", "copy-link", "theme", "track", "export-bvh-both",
+    ]) {
       const box = await page.getByTestId(id).boundingBox();
       expect(box, id).not.toBeNull();
       expect(box!.x, id).toBeGreaterThanOrEqual(0);
@@ -50,4 +53,21 @@ test("full quality (MSAA, shadow map) renders too", async ({ page }, info) => {
   await page.waitForFunction(() => window.__interplay.phase === "done");
   expect((await hook(page)).quality).toBe("full");
   await shot(page.getByTestId("viewport"), "layout-quality-full", info);
+});
+
+test("the light theme is applied and remembered; the empty studio says what to do", async ({ page }, info) => {
+  await openStudio(page);
+  await expect(page.getByTestId("empty-state")).toBeVisible();
+  const bg = () => page.evaluate(() => getComputedStyle(document.body).backgroundColor);
+  const dark = await bg();
+  await page.getByTestId("theme").click();
+  expect(await page.evaluate(() => document.documentElement.dataset.theme)).toBe("light");
+  expect(await bg()).not.toBe(dark);
+  await shot(page, "layout-light-empty", info);
+  await page.reload();
+  await expect(page.getByTestId("theme")).toBeVisible();
+  expect(await page.evaluate(() => document.documentElement.dataset.theme)).toBe("light");
+  await openStudio(page, `/m/${motionId}`);
+  await page.waitForFunction(() => window.__interplay.phase === "done");
+  await shot(page, "layout-light-salsa", info);
 });

@@ -31,8 +31,10 @@ export function App() {
           Interplay <span className="muted">studio</span>
         </h1>
         <PromptBar />
-        <Versions />
-        <ThemeToggle />
+        <div className="header-tools">
+          <Versions />
+          <ThemeToggle />
+        </div>
       </header>
       <ErrorBanner />
       <main className="app__main">

@@ -3,6 +3,7 @@
 import * as THREE from "three";
 import type { Skeleton } from "../api/types";
 import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
+import { blobMap } from "./blobShadow";
 import { QUALITY, type QualitySettings } from "./quality";
 
 // Capsule radius (m) of the bone ending at a joint, by joint name.
@@ -27,24 +28,6 @@ const BLOBS: [string, number][] = [
   ["left_ankle", 0.32],
   ["right_ankle", 0.32],
 ];
-
-let blobTexture: THREE.Texture | null = null;
-
-/** A soft round shadow: a radial gradient from dark to clear (made once). */
-function blobMap(): THREE.Texture {
-  if (blobTexture) return blobTexture;
-  const canvas = document.createElement("canvas");
-  canvas.width = canvas.height = 64;
-  const ctx = canvas.getContext("2d")!;
-  const g = ctx.createRadialGradient(32, 32, 0, 32, 32, 32);
-  g.addColorStop(0, "rgba(0,0,0,1)");
-  g.addColorStop(0.5, "rgba(0,0,0,0.55)");
-  g.addColorStop(1, "rgba(0,0,0,0)");
-  ctx.fillStyle = g;
-  ctx.fillRect(0, 0, 64, 64);
-  blobTexture = new THREE.CanvasTexture(canvas);
-  return blobTexture;
-}
 
 function boneRadius(name: string): number {
   return BONE_RADIUS.find(([re]) => re.test(name))?.[1] ?? 0.04;

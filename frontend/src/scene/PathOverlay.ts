@@ -58,7 +58,7 @@ export class PathOverlay {
       this.group.add(arrow);
     }
     if (editable) {
-      const ball = this.keep(new THREE.SphereGeometry(0.06, 12, 8));
+      const ball = this.keep(new THREE.SphereGeometry(0.045, 12, 8));
       const hmat = this.keep(new THREE.MeshBasicMaterial({ color: "#ffffff" }));
       points.forEach(([x, z], index) => {
         const h = new THREE.Mesh(ball, hmat);

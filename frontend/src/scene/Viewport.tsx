@@ -58,7 +58,9 @@ export function Viewport() {
       if (overlay.pointer !== pointer.version || overlay.path !== s.path || overlay.tool !== s.tool ||
         overlay.selected !== s.selected || overlay.gen !== generation) {
         const points = pointer.drawing ?? s.path.points;
-        stage.path.update(points, s.path.person, s.tool === "path" && !pointer.drawing);
+        // handles on presets and short drawn paths (a long stroke would be a string of beads)
+        const editable = s.tool === "path" && !pointer.drawing && (s.path.preset !== null || points.length <= 12);
+        stage.path.update(points, s.path.person, editable);
         if (skeleton) {
           const sets = (sel: { person: number; part: Parameters<typeof jointsOfPart>[1] } | null) =>
             [0, 1].map((p) => new Set(sel && sel.person === p ? jointsOfPart(skeleton.joints, sel.part) : []));

@@ -40,7 +40,7 @@ export function attachPointer(stage: Stage, canvas: HTMLCanvasElement): () => vo
       if (!g) return;
       if (down.handle !== null) {
         const points = s.path.points.map((p, i) => (i === down!.handle ? g : p)) as Point[];
-        s.setPath({ points, preset: null });
+        s.setPath({ points }); // stays a preset: its points keep their handles
       } else if (pointer.drawing) {
         pointer.drawing.push(g);
         pointer.version++;

@@ -95,6 +95,9 @@ export function TimelineTrack() {
       }}
     >
       <canvas ref={plot} className="track__plot" data-testid="distance-plot" aria-label="Minimum distance between the people" />
+      {!s.range && !marks.length && s.persons < 2 && (
+        <span className="track__hint small">drag here to select frames for an edit</span>
+      )}
       {s.range && (
         <div
           className="track__range"
