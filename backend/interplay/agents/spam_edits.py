@@ -18,6 +18,7 @@ from .motion_splice import (compose, edited_joints, joint_weights, ramp_move, se
 
 PARTS = sk.PART_NAMES
 BLEND_CONTEXT = 10       # tokens of each neighbour a transition sees (2 s)
+MIN_EDIT_STEPS = 4       # masked-decoding steps of an edit at least (see `edit`)
 
 
 @dataclass(frozen=True)
@@ -27,6 +28,7 @@ class Edit:
     parts: tuple[str, ...]
     frames: tuple[int, int]
     masked_tokens: int            # base tokens re-masked (edited parts + random context ones)
+    steps: int                    # masked-decoding steps used
     untouched_change_cm: float    # mean displacement (cm) of the joint-frames left alone
     model_untouched_change_cm: float  # the same for the model's own decode, against its decode
                                       # of the unedited codes (what splicing takes away)
@@ -52,7 +54,10 @@ def edit(rt, joints: np.ndarray, parts: list[str] | None, prompt: str, seed: int
     `prompt`; the other parts keep `context` (the motion's own prompt; default the edit prompt)
     and a `keep_noise` share of their tokens is re-masked at random, so they can meet the
     edited ones (CoMA 4.2.3). Only the edited parts' residual tokens (and those under a changed
-    base token) are predicted again. The output keeps the input's bone lengths, the joints of
+    base token) are predicted again. Decoding takes the configured steps scaled by the share of
+    the edited window's tokens that are masked (≥ MIN_EDIT_STEPS): a one-part edit masks about
+    a third of them, so ~4 steps commit as many tokens per step as generation's 10 do.
+    The output keeps the input's bone lengths, the joints of
     the unedited parts, every frame outside [a, b), and the root path unless a lower part is
     edited (then the new path is bent back onto the input's at b)."""
     joints = np.asarray(joints, dtype=np.float64)
@@ -75,6 +80,9 @@ def edit(rt, joints: np.ndarray, parts: list[str] | None, prompt: str, seed: int
     cols[lo // ds:-(-hi // ds)] = True
     force = rows[:, None] & cols[None, :]
     editable = force | ((~rows[:, None]) & cols[None, :] & (rng.random(force.shape) < keep_noise))
+    if sampling.get("steps") is None:
+        share = editable.sum() / max(1, editable[:, cols].size)
+        sampling["steps"] = max(MIN_EDIT_STEPS, int(np.ceil(rt.config.steps * share)))
     texts = {p: prompt for p in parts}
     texts["global"] = context or prompt
     new = rt.fill(codes, editable, rt.text_embedding(texts), rng, force=force, **sampling)
@@ -92,6 +100,7 @@ def edit(rt, joints: np.ndarray, parts: list[str] | None, prompt: str, seed: int
     model_only = F.decode(new_feats, offsets, start)
     recon = F.decode(rt.decode_codes(codes)[:t], offsets, start)
     return Edit(joints=out, parts=tuple(parts), frames=(lo, hi), masked_tokens=int(editable.sum()),
+                steps=int(sampling["steps"]),
                 untouched_change_cm=untouched_change_cm(out, joints, parts, (lo, hi)),
                 model_untouched_change_cm=untouched_change_cm(model_only, recon, parts, (lo, hi)))
 

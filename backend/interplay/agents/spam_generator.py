@@ -129,7 +129,7 @@ class SpamGenerator(Generator):
         edit = self.spam.edit(joints, parts, prompt.strip(), seed, frames=frames, context=context)
         entry = {"generator": "spam", "part": part or "whole_body", "parts": list(edit.parts),
                  "prompt": prompt.strip(), "frames": list(edit.frames), "seed": seed,
-                 "masked_tokens": edit.masked_tokens,
+                 "masked_tokens": edit.masked_tokens, "steps": edit.steps,
                  "untouched_change_cm": round(edit.untouched_change_cm, 3),
                  "model_untouched_change_cm": round(edit.model_untouched_change_cm, 3)}
         return edit, entry
