@@ -4,7 +4,7 @@ import { create } from "zustand";
 import type { Skeleton } from "./api/types";
 import { initialStream, type StreamState } from "./api/stream";
 import { FrameBuffer } from "./playback/frameBuffer";
-import type { EditPart } from "./api/types";
+import type { EditInfo, EditPart } from "./api/types";
 import type { Point, Preset } from "./directing/path";
 import { noVersions, type Versions } from "./directing/versions";
 
@@ -87,6 +87,8 @@ export interface StudioState {
   /** A frame range [a, b) selected on the timeline (edits are limited to it). */
   range: [number, number] | null;
   editing: boolean;
+  /** What made the version shown (its edit of the parent), or null for a generated motion. */
+  edit: EditInfo | null;
   versions: Versions;
   theme: Theme;
   setTool(tool: Tool): void;
@@ -127,6 +129,7 @@ export const useStudio = create<StudioState>()((set) => ({
   selected: null,
   range: null,
   editing: false,
+  edit: null,
   versions: noVersions,
   theme: storedTheme(),
   setTool: (tool) => set((s) => ({ tool: s.tool === tool ? "view" : tool })),

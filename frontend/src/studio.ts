@@ -59,7 +59,7 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
   const { prompt, persons, seconds } = useStudio.getState();
   stream?.close();
   stream = null;
-  useStudio.setState({ error: null, selected: null, range: null });
+  useStudio.setState({ error: null, selected: null, range: null, edit: null });
   const req: JobRequest = { prompt, persons, seconds, ...override };
   const trajectory = override.trajectory ?? currentTrajectory();
   if (trajectory) req.trajectory = trajectory;
@@ -119,6 +119,7 @@ export function showMotion(motion: Motion): void {
     seconds: Math.max(1, Math.min(20, Math.round(n / FPS))),
     frame: 0,
     playing: true,
+    edit: motion.edit ?? null,
   });
 }
 

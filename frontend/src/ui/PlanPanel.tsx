@@ -1,6 +1,17 @@
 import { useShallow } from "zustand/react/shallow";
 import { useStudio } from "../store";
+import type { EditInfo } from "../api/types";
 import { SegmentCard } from "./SegmentCard";
+
+/** "left_arm: wave · frames 10–51" or "path (person A)". */
+export function describeEdit(e: EditInfo): string {
+  const parts = [
+    e.prompt ? `${e.part ?? "whole_body"}: ${e.prompt}` : null,
+    e.frames ? `frames ${e.frames[0]}–${e.frames[1]}` : null,
+    e.trajectory ? `path (person ${e.trajectory.person === 1 ? "B" : "A"})` : null,
+  ].filter(Boolean);
+  return parts.join(" · ") || "an edit";
+}
 
 /** The agent timeline: what the planner decided (segments, part edits, trajectory), then each
  * segment's generation, review rounds and corrections as they stream; re-run a segment. */
@@ -13,6 +24,7 @@ export function PlanPanel() {
       persons: s.motionPersons,
       editing: s.editing,
       motionId: s.motionId,
+      edit: s.edit,
     })),
   );
   const { plan } = s;
@@ -37,6 +49,11 @@ export function PlanPanel() {
             />
           ))}
         </ol>
+      )}
+      {s.edit && (
+        <p className="small plan__meta" data-testid="version-edit">
+          This version: {describeEdit(s.edit)}
+        </p>
       )}
       {trajectory && (
         <p className="small plan__meta" data-testid="plan-trajectory">
