@@ -62,6 +62,7 @@ def write_card(weights: Path, ckpt_dir: Path) -> Path:
     bench = Path(ckpt_dir) / "bench_reaction.json"
     if bench.exists():
         b = json.loads(bench.read_text())
+        b = b.get("reaction", b)          # `interplay bench --only reaction --json` output
         lines += ["", f"`interplay bench --only reaction` (load average {b['load_avg_1m']}):", ""]
         lines += [f"- per-frame step, guidance {r['guidance']}: p50 {r['p50_ms']} ms, p95 "
                   f"{r['p95_ms']} ms" for r in b["rows"]]

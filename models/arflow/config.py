@@ -38,7 +38,7 @@ class ARFlowConfig:
 
 @dataclass(frozen=True)
 class TrainConfig:
-    steps: int = 1600
+    steps: int = 4000
     batch_size: int = 32
     lr: float = 5e-4
     weight_decay: float = 0.01
