@@ -29,7 +29,7 @@ MIX[np.arange(NUM_SPHERES), SPHERE_CHILD] += SPHERE_FRACTION
 
 def sphere_centres(joints: np.ndarray) -> np.ndarray:
     """Centres (..., S, 3) of the sphere body of joints (..., 22, 3)."""
-    return np.einsum("sj,...jk->...sk", MIX, joints)
+    return MIX @ joints                                                  # (S,22)@(...,22,3)
 
 
 def radii(joints: np.ndarray | None = None, scale: float | None = None) -> np.ndarray:
@@ -51,18 +51,21 @@ def penetration_loss(reactor: np.ndarray, actor_centres: np.ndarray, reactor_rad
     if actor_centres.shape != (reactor.shape[0], NUM_SPHERES, 3):
         raise ValueError(f"actor sphere centres must be ({reactor.shape[0]}, {NUM_SPHERES}, 3), "
                          f"got {actor_centres.shape}")
-    c = sphere_centres(reactor)                                          # (T, S, 3)
+    c = MIX @ reactor                                                    # (T, S, 3)
     diff = c[:, :, None] - actor_centres[:, None]                        # (T, S, S, 3)
-    dist = np.sqrt(np.einsum("tsak,tsak->tsa", diff, diff))
+    dist = np.sqrt(np.square(diff).sum(axis=-1))
     rr, ra = np.asarray(reactor_radii), np.asarray(actor_radii)
     reach = rr[..., :, None] + ra[..., None, :]                          # (S, S) or (T, S, S)
     viol = np.maximum(safe + reach - dist, 0.0)
     loss = float(np.sum(viol ** 2))
-    # dL/dc_s = Σ_a −2 viol · (c_s − c_a)/|c_s − c_a|  (a coincident pair pushes along +Z)
-    unit = np.where(dist[..., None] > 1e-9, diff / np.maximum(dist, 1e-9)[..., None],
-                    np.array([0.0, 0.0, 1.0]))
-    grad_c = -2.0 * np.einsum("tsa,tsak->tsk", viol, unit)
-    return loss, np.einsum("sj,tsk->tjk", MIX, grad_c)
+    # dL/dc_s = Σ_a −2 viol · (c_s − c_a)/|c_s − c_a|
+    if loss == 0.0:
+        return loss, np.zeros_like(reactor)
+    w = -2.0 * viol / np.maximum(dist, 1e-9)                             # (T, S, S)
+    grad_c = (w[..., None] * diff).sum(axis=2)                           # (T, S, 3)
+    # a coincident pair (dist 0) gets a push along +Z
+    grad_c[..., 2] += (-2.0 * viol * (dist <= 1e-9)).sum(axis=2)
+    return loss, MIX.T @ grad_c
 
 
 def guide(reactor: np.ndarray, actor_centres: np.ndarray, reactor_radii: np.ndarray,
