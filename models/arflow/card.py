@@ -64,8 +64,9 @@ def write_card(weights: Path, ckpt_dir: Path) -> Path:
         b = json.loads(bench.read_text())
         b = b.get("reaction", b)          # `interplay bench --only reaction --json` output
         lines += ["", f"`interplay bench --only reaction` (load average {b['load_avg_1m']}):", ""]
-        lines += [f"- per-frame step, guidance {r['guidance']}: p50 {r['p50_ms']} ms, p95 "
-                  f"{r['p95_ms']} ms" for r in b["rows"]]
+        lines += [f"- per-frame step, {'cached keys/values' if r.get('cached') else 'window'}, "
+                  f"guidance {r['guidance']}: p50 {r['p50_ms']} ms, p95 {r['p95_ms']} ms"
+                  for r in b["rows"]]
     lines += ["", "## Limits", "",
               "Trained on 11 captured pairs of one activity (salsa) plus composed pairs: "
               "reactions outside these are not expected to be good. Joints, not rotations, are "

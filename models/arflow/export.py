@@ -6,6 +6,12 @@ this contract; keep names, dtypes and axes):
                                                             → x1 (B, T, 66) f32 predicted reaction
   T ≤ config.json "window"; frame i of x1 depends on inputs at frames ≤ i only.
 
+  arflow_step.onnx  one new frame with cached keys/values (the online fast path; see
+               model.ARFlowStep): x_t, actor (B, 1, 66), t (B,), text (B, 384), pos (1,) i64,
+               past_k, past_v, mem_k, mem_v (layers, B, heads, P, dh) f32, P ≥ 0
+                                   → x1 (B, 1, 66), new_k, new_v, new_mem_k, new_mem_v
+                                     (layers, B, heads, 1, dh)
+
 plus normalizer.npz (mean, std (66,) over both people's joints, metres) and config.json.
 
   python -m models.arflow.export --ckpt var/arflow --out models/weights/arflow
@@ -23,7 +29,7 @@ import numpy as np
 import torch
 
 from .config import POSE_DIM, TEXT_DIM, ARFlowConfig, from_dict
-from .model import ARFlow
+from .model import ARFlow, ARFlowStep
 
 ROOT = Path(__file__).resolve().parents[2]
 WEIGHTS = ROOT / "models" / "weights" / "arflow"
@@ -61,6 +67,7 @@ def export(ckpt_dir: Path, out: Path | None = None, sampling: dict | None = None
                                         "actor": {0: "batch", 1: "frames"},
                                         "text": {0: "batch"}, "x1": {0: "batch", 1: "frames"}},
                           opset_version=OPSET, dynamo=False)
+    export_step(model, out / "arflow_step.onnx")
     shutil.copy(Path(ckpt_dir) / "normalizer.npz", out / "normalizer.npz")
     ck = torch.load(Path(ckpt_dir) / "arflow.pt", map_location="cpu", weights_only=True)
     config = {"window": model.cfg.window, "pose_dim": POSE_DIM, "text_dim": TEXT_DIM,
@@ -69,10 +76,38 @@ def export(ckpt_dir: Path, out: Path | None = None, sampling: dict | None = None
               "sampling": {**SAMPLING, **(sampling or {})}}
     (out / "config.json").write_text(json.dumps(config, indent=1))
     check(model, out / "arflow.onnx")
+    check_step(model, out / "arflow_step.onnx")
     if (Path(ckpt_dir) / "train_summary.json").exists():
         from .card import write_card
         write_card(out, ckpt_dir)
     return out
+
+
+STEP_INPUTS = ["x_t", "t", "actor", "text", "pos", "past_k", "past_v", "mem_k", "mem_v"]
+STEP_OUTPUTS = ["x1", "new_k", "new_v", "new_mem_k", "new_mem_v"]
+
+
+def step_inputs(cfg: ARFlowConfig, past: int = 3) -> tuple:
+    g = torch.Generator().manual_seed(1)
+    cache = (cfg.layers, 1, cfg.heads, past, cfg.d_model // cfg.heads)
+    return (torch.randn(1, 1, POSE_DIM, generator=g), torch.rand(1, generator=g),
+            torch.randn(1, 1, POSE_DIM, generator=g), torch.randn(1, TEXT_DIM, generator=g),
+            torch.tensor([past]), *(torch.randn(cache, generator=g) for _ in range(4)))
+
+
+def export_step(model: ARFlow, path: Path) -> None:
+    step = ARFlowStep(model).eval()
+    cache_axes = {1: "batch", 3: "past"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torch.onnx.export(step, step_inputs(model.cfg), str(path), input_names=STEP_INPUTS,
+                          output_names=STEP_OUTPUTS,
+                          dynamic_axes={"x_t": {0: "batch"}, "t": {0: "batch"},
+                                        "actor": {0: "batch"}, "text": {0: "batch"},
+                                        **{n: cache_axes for n in STEP_INPUTS[5:]},
+                                        **{n: {1: "batch"} for n in STEP_OUTPUTS[1:]},
+                                        "x1": {0: "batch"}},
+                          opset_version=OPSET, dynamo=False)
 
 
 def check(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
@@ -87,6 +122,23 @@ def check(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
     err = float(np.abs(got - ref).max())
     if err > tol:
         raise RuntimeError(f"ONNX export differs from torch by {err:.2e}")
+    return err
+
+
+def check_step(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
+    """Max |ONNX − torch| of the one-frame graph, with an empty and a filled cache."""
+    import onnxruntime as ort
+
+    sess = ort.InferenceSession(str(path), providers=["CPUExecutionProvider"])
+    step, err = ARFlowStep(model).eval(), 0.0
+    for past in (0, 5):
+        args = step_inputs(model.cfg, past)
+        with torch.no_grad():
+            ref = step(*args)
+        got = sess.run(STEP_OUTPUTS, dict(zip(STEP_INPUTS, (a.numpy() for a in args))))
+        err = max(err, max(float(np.abs(g - r.numpy()).max()) for g, r in zip(got, ref)))
+    if err > tol:
+        raise RuntimeError(f"one-frame ONNX export differs from torch by {err:.2e}")
     return err
 
 

@@ -120,3 +120,47 @@ def loss_terms(pred: torch.Tensor, target: torch.Tensor, mean: torch.Tensor, std
     bl_p = (pj[:, :, child] - pj[:, :, parents[1:]]).norm(dim=-1)
     bl_t = (tj[:, :, child] - tj[:, :, parents[1:]]).norm(dim=-1)
     return {"rec": rec, "vel": vel, "bone": F.mse_loss(bl_p, bl_t)}
+
+
+class ARFlowStep(nn.Module):
+    """One new frame of `ARFlow` with cached keys/values (the online runtime's fast path).
+
+    Inputs: x_t, actor (B, 1, 66) of the new frame, t (B,), text (B, 384), pos (1,) int64 its
+    position in the window, past_k/past_v (layers, B, heads, P, dh) the self-attention
+    keys/values of the P earlier frames at this flow step, mem_k/mem_v (layers, B, heads, P, dh)
+    the cross-attention keys/values of the P earlier actor frames (these do not depend on
+    the flow step). Outputs: x1 (B, 1, 66) and the new frame's four (layers, B, heads, 1, dh)
+    entries to append. Equal to ARFlow's output at that frame (causal mask)."""
+
+    def __init__(self, model: ARFlow):
+        super().__init__()
+        self.m = model
+
+    def forward(self, x_t, t, actor, text, pos, past_k, past_v, mem_k, mem_v):
+        m, cfg = self.m, self.m.cfg
+        b, d, h = x_t.shape[0], cfg.d_model, cfg.heads
+        p = m.pos[pos]                                                    # (1, d)
+        cond = m.time_mlp(time_embedding(t, d))
+        if m.text_in is not None:
+            cond = cond + m.text_in(text)
+        x = m.state_in(x_t) + p + cond[:, None]
+        mem = m.actor_in(actor) + p
+        outs = ([], [], [], [])
+        for i, blk in enumerate(m.blocks):
+            y = blk.n1(x)
+            att = blk.self_att
+            q = att.q(y).view(b, 1, h, d // h).transpose(1, 2)
+            k, v = att.kv(y).view(b, 1, 2, h, d // h).permute(2, 0, 3, 1, 4)
+            kk, vv = torch.cat([past_k[i], k], dim=2), torch.cat([past_v[i], v], dim=2)
+            w = ((q @ kk.transpose(-1, -2)) / math.sqrt(d // h)).softmax(dim=-1)
+            x = x + att.out((w @ vv).transpose(1, 2).reshape(b, 1, d))
+            ca = blk.cross_att
+            q = ca.q(blk.n2(x)).view(b, 1, h, d // h).transpose(1, 2)
+            mk, mv = ca.kv(blk.nm(mem)).view(b, 1, 2, h, d // h).permute(2, 0, 3, 1, 4)
+            mkk, mvv = torch.cat([mem_k[i], mk], dim=2), torch.cat([mem_v[i], mv], dim=2)
+            w = ((q @ mkk.transpose(-1, -2)) / math.sqrt(d // h)).softmax(dim=-1)
+            x = x + ca.out((w @ mvv).transpose(1, 2).reshape(b, 1, d))
+            x = x + blk.mlp(blk.n3(x))
+            for lst, val in zip(outs, (k, v, mk, mv)):
+                lst.append(val)
+        return (m.head(m.norm(x)),) + tuple(torch.stack(o) for o in outs)

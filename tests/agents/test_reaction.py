@@ -111,3 +111,35 @@ def test_bad_input(model):
         ReactionSession(model).step(np.full((22, 3), np.nan))
     with pytest.raises(ValueError, match="sampling"):
         SamplingConfig(steps=0)
+
+
+def test_cached_session_matches_the_full_graph(model, windows):
+    from interplay.agents.reaction import window_frame
+    from interplay.agents.reaction_cache import CachedReactionSession
+    if model.step_session is None:
+        pytest.skip("weights without arflow_step.onnx")
+    actor = np.concatenate([windows[0, 0], windows[1, 0]])[:model.window + 8]
+    plain, cached = ReactionSession(model, seed=6), CachedReactionSession(model, seed=6)
+    for f in actor:
+        plain.step(f)
+        cached.step(f)
+    w = model.window
+    # Same anchor in the first window: the same computation.
+    assert np.abs(plain.raw()[:w] - cached.raw()[:w]).max() < 1e-4
+    # After the hop (unguided, so each step is the plain Euler step): the last frame's flow
+    # states follow from the full graph on the cached session's own window (anchor … n),
+    # fed the kept flow states of the earlier frames.
+    s = CachedReactionSession(model, seed=6, guidance=False)
+    for f in actor:
+        s.step(f)
+    n, anc, k_steps = len(actor) - 1, s.anchor, s.cfg.steps
+    assert 0 < anc < n - 1
+    rot, shift = window_frame(s.actor[anc])
+    to_c = lambda p: p @ rot.T + shift                                   # noqa: E731
+    a_n = model.normalize(to_c(np.stack(s.actor[anc:])))[None]
+    for k in range(k_steps):
+        xs = model.normalize(to_c(np.stack([st[k] for st in s.states[anc:]])))[None]
+        x1 = model.predict(xs, np.array([k / k_steps]), a_n, s.text)[:, -1]
+        t, tn = k / k_steps, (k + 1) / k_steps
+        nxt = (1 - tn) * (xs[:, -1] - t * x1) / (1 - t) + tn * x1
+        assert np.abs(nxt - model.normalize(to_c(s.states[n][k + 1]))[None]).max() < 1e-4

@@ -13,7 +13,7 @@ torch = pytest.importorskip("torch")
 
 from models.arflow.config import ARFlowConfig, TrainConfig  # noqa: E402
 from models.arflow.data import PairSet, fit_stats, pair_set  # noqa: E402
-from models.arflow.export import check, export, load  # noqa: E402
+from models.arflow.export import check, check_step, export, load  # noqa: E402
 from models.arflow.model import ARFlow  # noqa: E402
 from models.arflow.train import evaluate, tensors, train  # noqa: E402
 from interplay.motion.skeleton import PARENTS  # noqa: E402
@@ -53,6 +53,7 @@ def test_loss_falls_and_onnx_matches(data, tmp_path):
     assert summary["best_val"] < 0.8 * before, (before, summary["best_val"])
     out = export(tmp_path / "ck", tmp_path / "w")
     assert check(load(tmp_path / "ck"), out / "arflow.onnx") < 1e-3
+    assert check_step(load(tmp_path / "ck"), out / "arflow_step.onnx") < 1e-3
     config = json.loads((out / "config.json").read_text())
     assert config["window"] == 16 and config["sampling"]["steps"] >= 1
 

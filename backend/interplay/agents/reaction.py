@@ -13,7 +13,8 @@ Sampling is ARFlow's x-prediction Euler scheme in `steps` steps, written as repr
 The flow starts at x₀ = actor + σ·ε (normalised joints in the actor's heading frame at the first
 frame of the window), so the reactor is generated in the actor's frame and mapped back.
 
-Online (`ReactionSession.step`): each arriving actor frame runs the `steps` graph calls over a
+Online (`ReactionSession.step`; `reaction_cache.CachedReactionSession` is the fast variant
+with cached keys/values): each arriving actor frame runs the `steps` graph calls over a
 sliding window of the last `window` frames; the flow states of the earlier frames at every
 step are kept (in world coordinates, so the window's frame can move with the actor), so a
 frame never changes once emitted and never sees a future actor frame. Within the first window
@@ -81,6 +82,11 @@ class ReactionModel:
         names = tuple(i.name for i in self.session.get_inputs())
         if names != INPUTS:
             raise ValueError(f"{weights_dir}/arflow.onnx has inputs {names}, expected {INPUTS}")
+        # The one-frame graph with cached keys/values (online fast path), when exported.
+        step = weights_dir / "arflow_step.onnx"
+        self.step_session = (ort.InferenceSession(str(step), sess_options=opts,
+                                                  providers=["CPUExecutionProvider"])
+                             if step.exists() else None)
 
     def normalize(self, joints: np.ndarray) -> np.ndarray:
         """(..., 22, 3) metres → (..., 66) normalised."""
@@ -249,14 +255,17 @@ def fixed_bones(pose: np.ndarray, lengths: np.ndarray) -> np.ndarray:
 
 def react(actor_joints: np.ndarray, prompt: str | None = None, seed: int = 0,
           guidance: bool = True, reproject: bool | None = None,
-          model: ReactionModel | None = None, sampling: SamplingConfig | None = None) -> np.ndarray:
+          model: ReactionModel | None = None, sampling: SamplingConfig | None = None,
+          cache: bool = True) -> np.ndarray:
     """Reactor joints (T, 22, 3) for actor joints (T, 22, 3) (world, metres, 20 fps), generated
-    online frame by frame (the reactor never sees the actor's future), then fitted by IK → FK
-    on fixed bone lengths over the whole sequence at once."""
+    online frame by frame (the reactor never sees the actor's future; the cached session when
+    the weights have it), then fitted by IK → FK on fixed bone lengths over the whole
+    sequence at once."""
     actor = np.asarray(actor_joints, dtype=np.float64)
     if actor.ndim != 3 or actor.shape[1:] != (sk.NUM_JOINTS, 3) or len(actor) == 0:
         raise ValueError(f"actor joints must be (T, 22, 3) with T ≥ 1, got {actor.shape}")
-    session = ReactionSession(model, prompt, seed, guidance, reproject, sampling)
+    from .reaction_cache import open_session
+    session = open_session(model, prompt, seed, guidance, reproject, sampling, cache=cache)
     for f in actor:
         session.step(f)
     return fit_to_skeleton(session.raw(), session.offsets)[0]

@@ -24,7 +24,8 @@ CHUNK = 10          # frames per streamed event (0.5 s): the reactor is generate
 def react_job(job, generator, repo, guidance: bool = True, chunk: int = CHUNK) -> None:
     """Run `job` (JobSpec mode "react"): push its events and store the pair."""
     from ..agents.orchestrator import StageError
-    from ..agents.reaction import ReactionSession, get_reaction_model
+    from ..agents.reaction import get_reaction_model
+    from ..agents.reaction_cache import open_session
 
     spec = job.spec
     parent = repo.get(spec.actor_motion_id)
@@ -34,14 +35,15 @@ def react_job(job, generator, repo, guidance: bool = True, chunk: int = CHUNK) -
     if actor.ndim != 3 or actor.shape[1:] != (NUM_JOINTS, 3) or len(actor) == 0:
         raise StageError("react", f"the stored actor has joints of shape {actor.shape}")
     try:
-        session = ReactionSession(get_reaction_model(), prompt=spec.prompt, seed=spec.seed,
-                                  guidance=guidance)
+        session = open_session(get_reaction_model(), prompt=spec.prompt, seed=spec.seed,
+                               guidance=guidance)
     except (FileNotFoundError, ValueError) as exc:
         raise StageError("react", str(exc)) from exc
     total = len(actor)
     plan = {"mode": "react", "generator": "arflow", "actor_motion_id": parent.id,
             "prompt": spec.prompt, "frames": total, "guidance": guidance,
-            "sampling": plain(vars(session.cfg)), "reproject": session.reproject}
+            "sampling": plain(vars(session.cfg)), "reproject": session.reproject,
+            "session": type(session).__name__}
     job.push({"type": "plan", "plan": plan})
     job.push({"type": "segment", "index": 0, "status": "generating", "generator": "arflow"})
     reactor = np.zeros((total, NUM_JOINTS, 3), dtype=np.float64)
