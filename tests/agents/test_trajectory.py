@@ -182,6 +182,28 @@ def test_world_anchor_puts_the_walk_on_a_drawn_path(walks):
     assert np.median(heading_error(r["joints"], r["curve"])) < 15
 
 
+@pytest.mark.parametrize("stretch", [0.6, 1.7])
+def test_a_drawn_path_is_walked_to_its_end_at_its_own_size(walks, stretch):
+    # The studio's drawn paths: world coordinates, kept size, the walk retimed to cover them.
+    joints = walks[1]
+    walked = tj.travel(joints).s[-1]
+    xs = np.linspace(0.0, 1.0, 15)
+    drawn = np.stack([3.0 * xs, 1.5 * np.sin(np.pi * xs)], axis=1)
+    drawn *= stretch * walked / np.linalg.norm(np.diff(drawn, axis=0), axis=1).sum()
+    cfg = replace(tj.DEFAULT, anchor="world", scale_to_motion=False, retime=True)
+    r = tj.map_trajectory(joints, drawn, cfg=cfg)
+    assert r["scale"] == 1.0 and r["speed"] == pytest.approx(stretch, rel=0.1)
+    # Ends at the drawn end; a much faster walk's planted feet may hold the root back a little
+    # (footlock's bounded root shift), so the bound is the shift's, not the curve's.
+    assert np.linalg.norm(r["joints"][-1, 0, [0, 2]] - drawn[-1]) <= 0.15
+    assert np.linalg.norm(r["joints"][0, 0, [0, 2]] - drawn[0]) <= 0.15
+    assert np.median(heading_error(r["joints"], r["curve"])) < 15
+    unpinned = tj.map_trajectory(joints, drawn, cfg=replace(cfg, pin_feet=False))
+    assert np.linalg.norm(unpinned["joints"][-1, 0, [0, 2]] - drawn[-1]) <= 0.05
+    assert np.linalg.norm(unpinned["joints"][0, 0, [0, 2]] - drawn[0]) <= 0.05
+    assert np.allclose(sk.bone_lengths(r["joints"]), sk.bone_lengths(joints), atol=1e-6)
+
+
 def test_free_drawn_noisy_points_are_smoothed_and_evenly_resampled():
     rng = np.random.default_rng(3)
     t = np.cumsum(rng.uniform(0.2, 1.8, 150))

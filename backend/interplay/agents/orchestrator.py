@@ -29,8 +29,9 @@ from .segment_source import Cancelled, SegmentSource
 
 log = logging.getLogger(__name__)
 CHUNK = 40
-# A path drawn on the studio floor: world coordinates, its own size (the walk keeps its speed).
-DRAWN_PATH = {"anchor": "world", "scale_to_motion": False}
+# A path drawn on the studio floor: world coordinates, its own size; the walk is retimed to
+# cover it, so the person ends where the path ends.
+DRAWN_PATH = {"anchor": "world", "scale_to_motion": False, "retime": True}
 __all__ = ["orchestrate", "OrchestratorConfig", "Outcome", "StageError", "Cancelled"]
 
 

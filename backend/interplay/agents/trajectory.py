@@ -28,7 +28,9 @@ Length: by default (`scale_to_motion=True`) the curve is scaled to the distance 
 walks, so the motion traces the whole shape and ends where the curve ends, at its own speed.
 With `scale_to_motion=False` the curve keeps its size and the speed is untouched: the motion
 stops where its walk runs out (before the curve's end), or, if it walks further than the
-curve is long, carries on straight along the curve's last tangent.
+curve is long, carries on straight along the curve's last tangent. With `retime=True` as well
+(drawn paths), the speed profile is scaled so the motion covers the whole curve and ends at
+its end.
 Motions that barely travel (standing, squats: less than `min_travel` metres) are left in place
 (moved to the curve's start only when the curve is anchored to the world): spreading the curve
 over them at a walking pace would slide a standing person over the floor, every frame a skate;
@@ -59,6 +61,7 @@ class TrajectoryConfig:
     turn_smooth_s: float = 0.15    # s: Gaussian smoothing of the heading in time (corners: a step turn)
     min_travel: float = 0.5        # m: motions travelling less are left in place
     scale_to_motion: bool = True   # fit the curve's length to the distance walked
+    retime: bool = False           # keep the curve's size; scale the walking speed to cover it
     anchor: str = "facing"         # where the curve's frame sits: "facing", "travel" or "world"
     facing_window_s: float = 0.5   # s at the start over which the facing direction is averaged
     pin_feet: bool = True
@@ -240,8 +243,16 @@ def map_trajectory(joints: np.ndarray, curve_points, offsets: np.ndarray | None 
         k = tr.s[-1] / curve.length
         curve = Curve(curve.s * k, curve.points[0] + (curve.points - curve.points[0]) * k, curve.heading)
         scale *= k
+    speed = 1.0
+    progress = tr.s
+    if tr.moving and cfg.retime and not cfg.scale_to_motion:
+        # A drawn path is where the person must go: keep its size and the motion's own speed
+        # profile, scaled so the walk covers the whole curve in the motion's duration (planted
+        # feet are pinned below, so a faster walk strides, not skates).
+        speed = curve.length / max(tr.s[-1], 1e-9)
+        progress = tr.s * speed
     if tr.moving:
-        target, head = curve.at(tr.s)
+        target, head = curve.at(progress)
         turn = _gaussian(head, cfg.turn_smooth_s * fps) - tr.heading
         centre = tr.path
     else:
@@ -256,8 +267,8 @@ def map_trajectory(joints: np.ndarray, curve_points, offsets: np.ndarray | None 
         out = pin_feet(joints, out, turn, fps=fps)
     if offsets is not None:
         out, _ = fit_to_skeleton(out, np.asarray(offsets, dtype=np.float64))
-    return {"joints": out, "curve": curve.points, "scale": float(scale), "moving": tr.moving,
-            "turn": turn}
+    return {"joints": out, "curve": curve.points, "scale": float(scale), "speed": float(speed),
+            "moving": tr.moving, "turn": turn}
 
 
 def apply_trajectory(joints: np.ndarray, curve, offsets: np.ndarray | None = None,
