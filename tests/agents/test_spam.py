@@ -198,6 +198,8 @@ def test_leg_edit_moves_the_path_and_rejoins_it(stub, walk):
     edit = stub.edit(walk, ["left_leg"], "kicks with the left foot", seed=6, frames=(30, 70))
     assert np.array_equal(edit.joints[70:], walk[70:]) and np.array_equal(edit.joints[:30], walk[:30])
     assert np.ptp(sk.bone_lengths(edit.joints), axis=0).max() < 0.02
+    assert edit.untouched_pose_change_cm < 0.5      # the rest of the body keeps its pose …
+    assert edit.untouched_change_cm > edit.untouched_pose_change_cm   # … on the new path
 
 
 def test_blend_keeps_both_motions(stub, walk, clips):

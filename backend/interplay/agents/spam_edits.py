@@ -13,6 +13,7 @@ import numpy as np
 from ..motion import features as F
 from ..motion import skeleton as sk
 from ..motion.kinematics import fit_offsets
+from ..motion.rotations import yaw_matrix
 from .motion_splice import (compose, edited_joints, joint_weights, ramp_move, seam_corrected,
                             time_weights, yaw_between)
 
@@ -30,6 +31,8 @@ class Edit:
     masked_tokens: int            # base tokens re-masked (edited parts + random context ones)
     steps: int                    # masked-decoding steps used
     untouched_change_cm: float    # mean displacement (cm) of the joint-frames left alone
+    untouched_pose_change_cm: float  # the same in each frame's body frame (pelvis at the
+                                     # origin, hips facing +Z): the pose, not where it went
     model_untouched_change_cm: float  # the same for the model's own decode, against its decode
                                       # of the unedited codes (what splicing takes away)
 
@@ -45,6 +48,15 @@ def untouched_change_cm(a: np.ndarray, b: np.ndarray, parts: list[str],
     if edited.all():
         return 0.0
     return float(np.linalg.norm(a - b, axis=-1)[~edited].mean() * 100)
+
+
+def body_frame(joints: np.ndarray) -> np.ndarray:
+    """Joints (T, 22, 3) relative to each frame's pelvis, turned so the hips face +Z (hips
+    only: the shoulders may belong to an edited part)."""
+    across = joints[:, sk.LEFT_HIP] - joints[:, sk.RIGHT_HIP]          # towards the left, +X
+    yaw = np.arctan2(-across[:, 2], across[:, 0])                      # forward = across × up
+    back = np.swapaxes(yaw_matrix(yaw), -1, -2)
+    return np.einsum("tij,tkj->tki", back, joints - joints[:, sk.PELVIS:sk.PELVIS + 1])
 
 
 def edit(rt, joints: np.ndarray, parts: list[str] | None, prompt: str, seed: int,
@@ -102,6 +114,8 @@ def edit(rt, joints: np.ndarray, parts: list[str] | None, prompt: str, seed: int
     return Edit(joints=out, parts=tuple(parts), frames=(lo, hi), masked_tokens=int(editable.sum()),
                 steps=int(sampling["steps"]),
                 untouched_change_cm=untouched_change_cm(out, joints, parts, (lo, hi)),
+                untouched_pose_change_cm=untouched_change_cm(body_frame(out), body_frame(joints),
+                                                             parts, (lo, hi)),
                 model_untouched_change_cm=untouched_change_cm(model_only, recon, parts, (lo, hi)))
 
 

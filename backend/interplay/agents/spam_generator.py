@@ -131,6 +131,7 @@ class SpamGenerator(Generator):
                  "prompt": prompt.strip(), "frames": list(edit.frames), "seed": seed,
                  "masked_tokens": edit.masked_tokens, "steps": edit.steps,
                  "untouched_change_cm": round(edit.untouched_change_cm, 3),
+                 "untouched_pose_change_cm": round(edit.untouched_pose_change_cm, 3),
                  "model_untouched_change_cm": round(edit.model_untouched_change_cm, 3)}
         return edit, entry
 
