@@ -54,11 +54,15 @@ def test_measure_and_edit_fidelity_with_captures_as_the_model(clips, raised):
     def generate(text, frames, seed):
         return walk.people[0][:frames].astype(float)
 
-    def edit(joints, parts, prompt, seed):
+    contexts = []
+
+    def edit(joints, parts, prompt, seed, context):
+        contexts.append(context)
         return raised[:len(joints)]
 
     out = edit_fidelity(generate, edit, seeds=2, cases=[case], frames=n)[0]
     assert out["seeds"] == 2 and out["part"] == "right_upper"
+    assert contexts == [case.base, case.base]
     assert out["code_share"] > out["base_code_share"] == 0.0
     assert out["confirmed"] > 0
     assert out["untouched_cm"] > 1.0

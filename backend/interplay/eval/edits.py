@@ -75,14 +75,16 @@ def measure(case: EditCase, base: np.ndarray, edited: np.ndarray) -> dict:
 
 
 def edit_fidelity(generate, edit, seeds: int = 3, cases=CASES, frames: int = FRAMES) -> list[dict]:
-    """Per case: the numbers averaged over `seeds` seeds (generate(text, frames, seed),
-    edit(joints, parts, prompt, seed) as SpamRuntime's)."""
+    """Per case: the numbers averaged over `seeds` seeds (generate(text, frames, seed) and
+    edit(joints, parts, prompt, seed, context) as in eval.rows; the context is the base
+    prompt, which the parts left alone keep)."""
     out = []
     for k, case in enumerate(cases):
         runs = []
         for s in range(seeds):
             base = generate(case.base, frames, 7919 * k + s)
-            runs.append(measure(case, base, edit(base, [case.part], case.prompt, 7919 * k + s + 1)))
+            edited = edit(base, [case.part], case.prompt, 7919 * k + s + 1, case.base)
+            runs.append(measure(case, base, edited))
         out.append({**asdict(case), "seeds": seeds,
                     **{key: float(np.mean([r[key] for r in runs])) for key in runs[0]}})
     return out

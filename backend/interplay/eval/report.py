@@ -32,7 +32,7 @@ TEXT_METRICS = ("top1", "top2", "top3", "fid", "mm_dist", "diversity", "multimod
 @dataclass(frozen=True)
 class EvalConfig:
     repeats: int = 10           # CI repeats (pools, pairs, which generation per sample)
-    rounds: int = 3             # generated motions per test sample
+    rounds: int = 2             # generated motions per test sample
     mm_generations: int = 10    # generations per text for MultiModality
     pool: int = 32              # R-precision: 1 true + 31 mismatched texts
     diversity_pairs: int = 300

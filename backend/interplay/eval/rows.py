@@ -30,7 +30,9 @@ SINGLE_VQ_DIRS = ("spam_single", "single_vq", "vq_single")
 
 Generate = Callable[[str, int, int], np.ndarray]          # (text, frames, seed) → (frames, 22, 3)
 Reconstruct = Callable[[np.ndarray], np.ndarray]          # joints (T, 22, 3) → joints (T, 22, 3)
-Edit = Callable[[np.ndarray, list, str, int], np.ndarray]  # (joints, parts, prompt, seed) → joints
+# (joints, parts, prompt, seed, context) → joints; context = the base motion's prompt, which
+# the parts left alone keep (SpamRuntime.edit's `context`)
+Edit = Callable[[np.ndarray, list, str, int, str], np.ndarray]
 
 
 @dataclass(frozen=True)
@@ -74,8 +76,11 @@ def _spam(name: str, weights: Path) -> Row:
     _trained(weights)
     from ..agents.spam import SpamRuntime
     rt = SpamRuntime.load(weights, threads=1)
+
+    def edit(joints, parts, prompt, seed, context):
+        return rt.edit_parts(joints, parts, prompt, seed, context=context)
     return Row(name, "generated", generate=lambda text, frames, seed: rt.generate(text, frames, seed),
-               edit=rt.edit_parts, source=str(weights.relative_to(WEIGHTS.parents[1])))
+               edit=edit, source=str(weights.relative_to(WEIGHTS.parents[1])))
 
 
 def _vq(name: str, weights: Path) -> Row:
