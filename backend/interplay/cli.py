@@ -67,7 +67,8 @@ def cmd_generate(args) -> int:
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
-    generator = load_generator(get_settings().data_dir, get_settings().spam_dir)
+    generator = load_generator(get_settings().data_dir, get_settings().spam_dir,
+                               coda_dir=get_settings().coda_dir)
     motion = generator.generate(make_request(body.prompt, body.persons, body.seconds, seed))
     if not motion.metrics:
         motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
@@ -134,7 +135,8 @@ def cmd_edit(args) -> int:
         if args.prompt is not None:
             resolve_edit_part(args.part)
             settings = get_settings()
-            generator = load_generator(settings.data_dir, settings.spam_dir)
+            generator = load_generator(settings.data_dir, settings.spam_dir,
+                                       coda_dir=settings.coda_dir)
             joints, plan, _, seed = edit_joints(
                 generator, motion.people, motion.plan, motion.prompt, args.part, args.prompt,
                 args.frames, args.seed)
@@ -165,7 +167,7 @@ def cmd_review_eval(args) -> int:
     if args.limit is not None and args.limit < 1:
         raise CliError("--limit must be at least 1")
     settings = get_settings()
-    generator = load_generator(settings.data_dir, settings.spam_dir)
+    generator = load_generator(settings.data_dir, settings.spam_dir, coda_dir=settings.coda_dir)
     prompts = table8_prompts()[:args.limit]
     report = run(generator, prompts, seconds=args.seconds, rounds=args.rounds,
                  log=lambda m: print(m, file=sys.stderr))

@@ -9,6 +9,8 @@
     INTERPLAY_DATA_DIR       processed motion data the generator loads (default <repo>/models/data)
     INTERPLAY_SPAM_DIR       SPAM's ONNX weights (default <repo>/models/weights/spam); retrieval
                              serves when they are missing or do not load
+    INTERPLAY_CODA_DIR       CODA's ONNX weights for two people (default models/weights/coda);
+                             retrieval serves two people when they are missing or untrained
     INTERPLAY_LLM_BASE_URL   optional OpenAI-compatible endpoint for the planner (e.g.
                              http://localhost:11434/v1); with INTERPLAY_LLM_MODEL set the planner
                              asks it and falls back to the embedded planner on any failure
@@ -37,6 +39,7 @@ class Settings(BaseSettings):
     frontend_dist: Path = REPO_ROOT / "frontend" / "dist"
     data_dir: Path | None = None                      # None: the generator's default
     spam_dir: Path | None = None                      # None: models/weights/spam
+    coda_dir: Path | None = None                      # None: models/weights/coda
     job_workers: int = Field(default=1, ge=1, le=16)
     max_pending_jobs: int = Field(default=16, ge=1)   # beyond this POST /api/jobs answers 429
     job_retention_s: float = 900.0                    # finished jobs stay streamable this long

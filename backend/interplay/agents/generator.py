@@ -171,18 +171,22 @@ class Generator:
 
 
 @lru_cache(maxsize=4)
-def _load(data_dir: str, spam_dir: str | None, use_spam: bool) -> Generator:
+def _load(data_dir: str, spam_dir: str | None, use_spam: bool, coda_dir: str | None = None
+          ) -> Generator:
     from ..text.encoder import get_encoder
 
     index = RetrievalIndex(default_clips(data_dir), get_encoder())
     if not use_spam:
         return Generator(index)
-    from .spam_generator import with_spam
-    return with_spam(index, spam_dir)
+    from .coda_generator import with_models
+    return with_models(index, spam_dir, coda_dir)
 
 
-def load_generator(data_dir=None, spam_dir=None, use_spam: bool = True) -> Generator:
+def load_generator(data_dir=None, spam_dir=None, use_spam: bool = True, coda_dir=None
+                   ) -> Generator:
     """The generator over the processed data set (models/data by default), built once: SPAM
-    (models/weights/spam by default) for one person when its weights load, else retrieval
-    (see `spam_generator`); use_spam=False gives retrieval alone."""
-    return _load(str(data_dir or DATA_DIR), str(spam_dir) if spam_dir else None, use_spam)
+    (models/weights/spam by default) for one person and CODA (models/weights/coda) for two
+    when their weights load, else retrieval (see `spam_generator`, `coda_generator`);
+    use_spam=False gives retrieval alone."""
+    return _load(str(data_dir or DATA_DIR), str(spam_dir) if spam_dir else None, use_spam,
+                 str(coda_dir) if coda_dir else None)

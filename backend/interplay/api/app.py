@@ -27,7 +27,7 @@ log = logging.getLogger(__name__)
 
 def _load_generator(settings: Settings):
     from ..agents.generator import load_generator
-    return load_generator(settings.data_dir, settings.spam_dir)
+    return load_generator(settings.data_dir, settings.spam_dir, coda_dir=settings.coda_dir)
 
 
 def readable_errors(errors) -> str:
