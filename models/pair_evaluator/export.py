@@ -1,0 +1,143 @@
+"""Export a trained pair evaluator for the numpy/onnxruntime runtime and write its card.
+
+    .venv/bin/python -m models.pair_evaluator.export [--ckpt var/pair_evaluator/pair_evaluator.pt]
+                                                     [--out models/weights/pair_evaluator]
+
+Writes motion_encoder.onnx (dynamic batch and length), text_proj.npz, normalizer.npz,
+config.json, metrics.json and MODEL_CARD.md with numbers measured through the runtime
+(`interplay.agents.pair_evaluator.PairEvaluator`): kind retrieval accuracy on the val and
+test splits, and FID of real and broken pairs against the train split's real pairs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import numpy as np
+import torch
+
+from interplay.agents.pair_evaluator import PairEvaluator, fid
+from interplay.motion.clip import DATA_DIR, default_clips
+from models.evaluator.export import export_onnx, onnx_matches_torch
+from models.evaluator.model import Evaluator
+
+from .card import model_card
+from .config import PairEvaluatorConfig
+from .data import build_set, displaced, time_shifted
+from .train import DEFAULT_OUT
+
+ROOT = Path(__file__).resolve().parents[2]
+WEIGHTS = ROOT / "models" / "weights" / "pair_evaluator"
+WINDOW, STRIDE = 40, 20          # as interplay eval-react's test windows
+
+
+def load_checkpoint(path: str | Path) -> tuple[Evaluator, dict]:
+    ckpt = torch.load(path, map_location="cpu", weights_only=False)
+    model = Evaluator(PairEvaluatorConfig.from_dict(ckpt["config"]))
+    model.load_state_dict(ckpt["model"])
+    return model.eval(), ckpt
+
+
+def export(ckpt_path: str | Path, out: str | Path) -> dict:
+    """Write the runtime files into `out`; returns the checkpoint."""
+    model, ckpt = load_checkpoint(ckpt_path)
+    cfg = model.cfg
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    export_onnx(model, out / "motion_encoder.onnx")
+    t = model.text
+    np.savez(out / "text_proj.npz", fc1_w=t.fc1.weight.detach().numpy().T,
+             fc1_b=t.fc1.bias.detach().numpy(), fc2_w=t.fc2.weight.detach().numpy().T,
+             fc2_b=t.fc2.bias.detach().numpy())
+    np.savez(out / "normalizer.npz", mean=np.asarray(ckpt["normalizer"]["mean"], np.float32),
+             std=np.asarray(ckpt["normalizer"]["std"], np.float32))
+    (out / "config.json").write_text(json.dumps({
+        "embed_dim": cfg.embed_dim, "max_frames": cfg.max_frames, "patch": cfg.patch,
+        "feature_dim": cfg.feature_dim, "text_dim": cfg.text_dim, "temperature": cfg.temperature,
+        "kinds": ckpt["kinds"], "prompts": ckpt["prompts"],
+        "text_encoder": "all-MiniLM-L6-v2 int8 (interplay.text.encoder)"}, indent=1) + "\n")
+    return ckpt
+
+
+def kind_accuracy(ev: PairEvaluator, clips, split: str, prompts: dict[str, list[str]]) -> dict:
+    """Top-1/top-2 kind accuracy of a split's windows (both role orders, not mirrored) ranking
+    every training prompt: a hit when the best text (best two distinct kinds) is of its kind."""
+    kinds = sorted(prompts)
+    data, _ = build_set(clips, split, WINDOW, STRIDE, mirror=False,
+                        normalizer=(np.zeros(1, np.float32), np.ones(1, np.float32)), kinds=kinds)
+    texts, owner = [], []
+    for k, name in enumerate(kinds):
+        texts += prompts[name]
+        owner += [k] * len(prompts[name])
+    sims = ev.embed(data.joints) @ ev.embed_text(texts).T                # (N, V)
+    per_kind = np.stack([sims[:, np.array(owner) == k].max(axis=1) for k in range(len(kinds))], 1)
+    order = np.argsort(-per_kind, axis=1)
+    top1 = order[:, 0] == data.kind
+    top2 = top1 | (order[:, 1] == data.kind)
+    return {"windows": int(len(data)), "top1": float(top1.mean()), "top2": float(top2.mean()),
+            "per_kind_top1": {kinds[k]: float(top1[data.kind == k].mean())
+                              for k in range(len(kinds)) if np.any(data.kind == k)}}
+
+
+def fid_table(ev: PairEvaluator, clips, seed: int = 0) -> dict:
+    """FID against the train split's real windows (captured and composed separately) of:
+    the val and test real windows, and the test windows broken — second person displaced by
+    1 m (random direction), time-shifted by 1 s, or replaced by another test window's."""
+    rng = np.random.default_rng(seed)
+    out = {}
+    for name, synthetic in (("captured", False), ("composed", True)):
+        sel = [c for c in clips if c.synthetic == synthetic]
+        ref = build_set(sel, "train", WINDOW, STRIDE, mirror=False, normalizer=_NO_NORM)[0]
+        val = build_set(sel, "val", WINDOW, STRIDE, mirror=False, normalizer=_NO_NORM)[0]
+        test = build_set(sel, "test", WINDOW, STRIDE, mirror=False, normalizer=_NO_NORM)[0]
+        e_ref = ev.embed(ref.joints)
+        rows = {"train_windows": len(ref), "test_windows": len(test)}
+        if len(val) > 1:
+            rows["val real"] = fid(ev.embed(val.joints), e_ref)
+        rows["test real"] = fid(ev.embed(test.joints), e_ref)
+        moved = np.stack([displaced(w, 1.0, rng.uniform(0, 2 * np.pi)) for w in test.joints])
+        rows["test, second displaced 1 m"] = fid(ev.embed(moved), e_ref)
+        shifted = [time_shifted(test, i, 1) for i in range(len(test))]  # +STRIDE frames = 1 s
+        shifted = [w for w in shifted if w is not None]
+        if len(shifted) > 1:
+            rows["test, second 1 s later"] = fid(ev.embed(np.stack(shifted)), e_ref)
+            rows["shifted_windows"] = len(shifted)
+        perm = rng.permutation(len(test))
+        other = np.stack([test.joints[:, 0], test.joints[perm, 1]], axis=1)
+        rows["test, second from another window"] = fid(ev.embed(other), e_ref)
+        out[name] = rows
+    return out
+
+
+_NO_NORM = (np.zeros(1, np.float32), np.ones(1, np.float32))
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--ckpt", default=str(DEFAULT_OUT / "pair_evaluator.pt"))
+    ap.add_argument("--out", default=str(WEIGHTS))
+    ap.add_argument("--data-dir", default=str(DATA_DIR))
+    ap.add_argument("--no-card", action="store_true", help="skip the measurements and card")
+    args = ap.parse_args(argv)
+    ckpt = export(args.ckpt, args.out)
+    model, _ = load_checkpoint(args.ckpt)
+    ev = PairEvaluator.load(args.out)
+    err = onnx_matches_torch(model, ev)
+    print(f"wrote {args.out}; ONNX vs torch max |Δ| = {err:.2e}")
+    if not args.no_card:
+        clips = default_clips(args.data_dir)
+        metrics = {"onnx_error": err,
+                   "retrieval": {s: kind_accuracy(ev, clips, s, ckpt["prompts"]) for s in ("val", "test")},
+                   "fid": fid_table(ev, clips)}
+        out = Path(args.out)
+        (out / "metrics.json").write_text(json.dumps(metrics, indent=1) + "\n")
+        params = sum(p.numel() for p in model.parameters())
+        (out / "MODEL_CARD.md").write_text(model_card(ckpt, metrics, params, out))
+        print(json.dumps(metrics, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
