@@ -1,5 +1,5 @@
 """The `interplay` command: serve, generate, edit, react, metrics, export, bench, eval,
-eval-react, data build.
+eval-react, eval-pair, data build.
 
 Bad files or arguments exit with code 2 and a one-line message on stderr."""
 
@@ -241,15 +241,20 @@ def cmd_bench(args) -> int:
         raise CliError("--runs must be at least 1")
     from .bench_model import format_model_table, run_model_bench
     from .settings import get_settings
-    report = {}
-    if args.only not in ("model", "reaction"):
+    report, tables, only = {}, [], args.only
+    if only in (None, "api"):
         report = run_bench(runs=args.runs, seconds=args.seconds, warmup=args.warmup)
-    if args.only not in ("api", "reaction"):
+        tables.append(format_table(report))
+    if only in (None, "model"):
         report["model"] = run_model_bench(get_settings().spam_dir, runs=args.runs,
                                           warmup=args.warmup)
-    tables = ([format_table(report)] if args.only not in ("model", "reaction") else []) + (
-        [format_model_table(report["model"])] if args.only not in ("api", "reaction") else [])
-    if args.only in (None, "reaction"):
+        tables.append(format_model_table(report["model"]))
+    if only in (None, "pair"):
+        from .bench_pair import format_pair_table, run_pair_bench
+        report["pair"] = run_pair_bench(get_settings().coda_dir, runs=args.runs,
+                                        warmup=args.warmup)
+        tables.append(format_pair_table(report["pair"]))
+    if only in (None, "reaction"):
         from .bench_reaction import format_reaction_table, run_reaction_bench
         report["reaction"] = run_reaction_bench()
         tables.append(format_reaction_table(report["reaction"]))
@@ -377,8 +382,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--runs", type=int, default=3, help="timed jobs per person count (default 3)")
     p.add_argument("--seconds", type=_seconds, default=6.0, help="motion length (default 6)")
     p.add_argument("--warmup", type=int, default=1, help="untimed jobs first (default 1)")
-    p.add_argument("--only", choices=("api", "model", "reaction"), help="one section: jobs "
-                   "through the API, SPAM on onnxruntime, or the ARFlow reactor (default all)")
+    p.add_argument("--only", choices=("api", "model", "pair", "reaction"), help="one section: "
+                   "jobs through the API, SPAM on onnxruntime, CODA two-person generation, or "
+                   "the ARFlow reactor (default all)")
     p.set_defaults(func=cmd_bench)
 
     p = sub.add_parser("eval", help="text-to-motion metrics (R-precision, FID, …) of every "
@@ -405,6 +411,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--repeats", type=int, default=2, help="sampling seeds per row (default 2)")
     p.add_argument("--seed", type=int, default=0)
     p.set_defaults(func=cmd_eval_react)
+
+    from .eval.pair_cli import add_eval_pair
+    add_eval_pair(sub)
 
     p = sub.add_parser("data", help="processed data set: `interplay data build [options]`")
     p.add_argument("action", choices=("build",))
