@@ -1,0 +1,63 @@
+"""`interplay eval-pair` on a tiny subset: the table's sets and columns, real vs retrieval,
+rows without weights listed as skipped, the contact windows from the composed data, CLI."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+
+from interplay.cli import main
+from interplay.eval.pair import SCORES, pair_set, window_scores
+from interplay.eval.pair_report import contact_windows, format_table, run_eval_pair
+from interplay.motion.clip import default_clips
+
+
+def test_eval_pair_on_a_tiny_subset(tmp_path):
+    report = run_eval_pair(("real", "retrieval", "coda"), repeats=2, limit=3, contact_seeds=1,
+                           weights=tmp_path)                 # no CODA weights there
+    assert report["skipped"] == {"coda": "no weights in models/weights/coda"}
+    assert set(report["sets"]) == {"captured", "composed"}
+    for res in report["sets"].values():
+        assert res["windows"] == 3 and set(res["rows"]) == {"real", "retrieval"}
+        for cells in res["rows"].values():
+            assert set(cells) == {"fid", *SCORES}
+            assert all(np.isfinite(v).all() and v[1] >= 0 for v in cells.values())
+    # captured salsa windows: retrieval composes no bodies into each other more than they are
+    real = report["sets"]["captured"]["rows"]["real"]
+    assert real["bone_deviation"][0] < 0.005           # captured bones barely stretch
+    kinds = report["contact"]["kinds"]
+    assert {"handshake", "high_five", "hug"} <= set(kinds)
+    assert all(k["shares"]["real"] == 1.0 for k in kinds.values())   # the check sees the touch
+    table = format_table(report)
+    assert "composed, SYNTHETIC" in table and "skipped coda" in table and "hug" in table
+
+
+def test_contact_windows_cover_the_composed_touches():
+    clips = default_clips()
+    windows = contact_windows(clips)
+    for kind, info in windows.items():
+        lo, hi = info["window"]
+        for cid in info["clips"]:
+            c = next(x for x in clips if x.id == cid)
+            assert lo <= c.meta["contact"]["start"] and c.meta["contact"]["end"] <= hi
+
+
+def test_window_scores_see_an_overlap():
+    test = pair_set("test")
+    w = test.windows[0].copy()
+    apart, inside = w.copy(), w.copy()
+    apart[1, ..., 0] += 5.0                               # 5 m apart: no touch, no overlap
+    inside[1] = inside[0]                                 # one body inside the other
+    s_apart, s_inside = window_scores(apart), window_scores(inside)
+    assert s_apart[0] == 0 and s_apart[2] == 0 and s_apart[5] == 0
+    assert s_inside[0] > 1000 and s_inside[1] == 1.0 and s_inside[5] > 5
+
+
+def test_cli_eval_pair(capsys):
+    assert main(["eval-pair", "--json", "--rows", "real", "--repeats", "2", "--limit", "2",
+                 "--contact-seeds", "0"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert set(report["sets"]["composed"]["rows"]) == {"real"} and "contact" not in report
+    assert main(["eval-pair", "--rows", "nope"]) == 2
+    assert "unknown row" in capsys.readouterr().err
