@@ -66,7 +66,7 @@ def test_displaced_second_person_raises_fid(ev, synthetic):
     moved[:, 1, ..., 0] += np.sin(angle)[:, None, None]
     moved[:, 1, ..., 2] += np.cos(angle)[:, None, None]
     assert fid(ev.embed(moved), ref) > 2.0 * real
-    # and pair by pair: each real window is nearer its own kind's real windows than its
-    # displaced copy is (cosine to the mean real test embedding)
-    centre = ev.embed(test).mean(axis=0)
-    assert np.mean(ev.embed(test) @ centre > ev.embed(moved) @ centre) > 0.8
+    # and pair by pair: a real window lies nearer (cosine) to some train window than its
+    # displaced copy does, for nearly every window
+    nearest = lambda e: (e @ ref.T).max(axis=1)                        # noqa: E731
+    assert np.mean(nearest(ev.embed(test)) > nearest(ev.embed(moved))) > 0.85
