@@ -51,6 +51,19 @@ def test_penetration_gradient_is_the_loss_derivative(windows):
     assert penetration_loss(moved, sphere_centres(actor), rr, ra)[0] < 0.2 * loss
 
 
+def test_penetration_loss_equals_the_sphere_pair_sum(windows):
+    """The matmul form gives the loss written out pair by pair (every window's captured pair,
+    the partner pulled 20 cm towards the actor so spheres overlap)."""
+    for actor, reactor in windows[:, :, ::8]:
+        reactor = reactor + 0.2 * (actor[:, :1] - reactor[:, :1]) * np.array([1, 0, 1])
+        ac, rc = sphere_centres(actor), sphere_centres(reactor)
+        ra, rr = radii(actor), radii(reactor)
+        gap = np.linalg.norm(rc[:, :, None] - ac[:, None], axis=-1) - rr[:, None] - ra[None]
+        want = float(np.sum(np.maximum(0.06 - gap, 0.0) ** 2))
+        assert penetration_loss(reactor, ac, rr, ra, 0.06)[0] == pytest.approx(want, rel=1e-9,
+                                                                              abs=1e-15)
+
+
 def test_no_gradient_beyond_the_safe_distance(windows):
     actor = windows[0, 0, :3]
     far = actor + np.array([3.0, 0.0, 0.0])

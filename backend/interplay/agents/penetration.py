@@ -10,6 +10,12 @@ and actor sphere a in the same frame, the signed surface gap is g = |c_s − c_a
 so the gradient is zero beyond δ (ARFlow's safe distance). Sphere centres are fixed linear
 mixes of two joints (c = (1 − f)·p + f·child), so ∂L/∂joints = Mᵀ ∂L/∂c with the constant
 (S, 22) mixing matrix M below: no network or decoder needs differentiating.
+
+Distances come from |c|² + |a|² − 2·c·aᵀ and the centre gradient from Σ_a w·(c_s − c_a) =
+c_s·Σ_a w − W·a: matmuls over (T, S, S) instead of a (T, S, S, 3) difference array (2–4× less
+time, same values to 1e-12). A broad phase (per-part bounding spheres, only pairs of nearby
+parts evaluated) was measured and dropped: at 45 × 45 spheres its own bookkeeping cost more
+than the pairs it skipped (see docs/reaction.md).
 """
 
 from __future__ import annotations
@@ -48,23 +54,28 @@ def penetration_loss(reactor: np.ndarray, actor_centres: np.ndarray, reactor_rad
     reactor = np.asarray(reactor, dtype=np.float64)
     if reactor.ndim != 3 or reactor.shape[1:] != (sk.NUM_JOINTS, 3):
         raise ValueError(f"reactor joints must be (T, 22, 3), got {reactor.shape}")
-    if actor_centres.shape != (reactor.shape[0], NUM_SPHERES, 3):
-        raise ValueError(f"actor sphere centres must be ({reactor.shape[0]}, {NUM_SPHERES}, 3), "
+    t = reactor.shape[0]
+    if actor_centres.shape != (t, NUM_SPHERES, 3):
+        raise ValueError(f"actor sphere centres must be ({t}, {NUM_SPHERES}, 3), "
                          f"got {actor_centres.shape}")
+    rr = np.broadcast_to(reactor_radii, (t, NUM_SPHERES))
+    ra = np.broadcast_to(actor_radii, (t, NUM_SPHERES))
     c = MIX @ reactor                                                    # (T, S, 3)
-    diff = c[:, :, None] - actor_centres[:, None]                        # (T, S, S, 3)
-    dist = np.sqrt(np.square(diff).sum(axis=-1))
-    rr, ra = np.asarray(reactor_radii), np.asarray(actor_radii)
-    reach = rr[..., :, None] + ra[..., None, :]                          # (S, S) or (T, S, S)
-    viol = np.maximum(safe + reach - dist, 0.0)
-    loss = float(np.sum(viol ** 2))
-    # dL/dc_s = Σ_a −2 viol · (c_s − c_a)/|c_s − c_a|
+    # distances by |c|² + |a|² − 2 c·a (matmuls; no (T, S, S, 3) difference array)
+    d2 = (np.einsum("tsk,tsk->ts", c, c)[:, :, None]
+          + np.einsum("tak,tak->ta", actor_centres, actor_centres)[:, None, :]
+          - 2.0 * (c @ actor_centres.transpose(0, 2, 1)))                # (T, S, S)
+    dist = np.sqrt(np.maximum(d2, 0.0))
+    viol = np.maximum(safe + rr[:, :, None] + ra[:, None, :] - dist, 0.0)
+    loss = float(np.sum(viol * viol))
     if loss == 0.0:
         return loss, np.zeros_like(reactor)
-    w = -2.0 * viol / np.maximum(dist, 1e-9)                             # (T, S, S)
-    grad_c = (w[..., None] * diff).sum(axis=2)                           # (T, S, 3)
-    # a coincident pair (dist 0) gets a push along +Z
-    grad_c[..., 2] += (-2.0 * viol * (dist <= 1e-9)).sum(axis=2)
+    # dL/dc_s = Σ_a w_sa (c_s − c_a) with w = −2 viol / |c_s − c_a|
+    w = -2.0 * viol / np.maximum(dist, 1e-6)                             # (T, S, S)
+    grad_c = c * w.sum(axis=2)[..., None] - w @ actor_centres           # (T, S, 3)
+    # a coincident pair (dist ~0: no direction; the formula's rounding is ~1e-8 m) gets a
+    # push along +Z
+    grad_c[..., 2] += (-2.0 * viol * (dist <= 1e-6)).sum(axis=2)
     return loss, MIX.T @ grad_c
 
 

@@ -202,15 +202,21 @@ class ReactionSession:
         self.states: list[np.ndarray] = []     # world (steps + 1, 22, 3) flow states per frame
         self.scales: tuple[float, float] | None = None
 
-    def step(self, actor_frame: np.ndarray) -> np.ndarray:
-        """The reactor's frame (22, 3) for the next actor frame (22, 3), world coordinates."""
+    def _accept(self, actor_frame: np.ndarray) -> np.ndarray:
+        """Check and keep the next actor frame (22, 3) (world); the radius scales come from the
+        first one. Shared by the cached session."""
         frame = np.asarray(actor_frame, dtype=np.float64)
         if frame.shape != (sk.NUM_JOINTS, 3) or not np.all(np.isfinite(frame)):
             raise ValueError(f"actor frame must be finite (22, 3), got {frame.shape}")
-        m, cfg = self.model, self.cfg
         self.actor.append(frame)
         if self.scales is None:
             self.scales = _scales(frame[None])
+        return frame
+
+    def step(self, actor_frame: np.ndarray) -> np.ndarray:
+        """The reactor's frame (22, 3) for the next actor frame (22, 3), world coordinates."""
+        self._accept(actor_frame)
+        m, cfg = self.model, self.cfg
         lo = max(0, len(self.actor) - m.window)
         rot, shift = window_frame(self.actor[lo])
         to_c = lambda p: p @ rot.T + shift                               # noqa: E731

@@ -61,14 +61,8 @@ class CachedReactionSession(ReactionSession):
             self.mem = [np.concatenate([c, n], axis=3) for c, n in zip(self.mem, new_mem)]
 
     def step(self, actor_frame: np.ndarray) -> np.ndarray:
-        frame = np.asarray(actor_frame, dtype=np.float64)
-        if frame.shape != (sk.NUM_JOINTS, 3) or not np.all(np.isfinite(frame)):
-            raise ValueError(f"actor frame must be finite (22, 3), got {frame.shape}")
+        frame = self._accept(actor_frame)
         m, cfg = self.model, self.cfg
-        self.actor.append(frame)
-        if self.scales is None:
-            from .reaction import _scales
-            self.scales = _scales(frame[None])
         n = len(self.actor) - 1
         moved = n - self.anchor >= m.window
         if moved:
