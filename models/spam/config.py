@@ -25,7 +25,7 @@ class VQConfig:
     downsample: int = 4           # frames per token (two stride-2 stages)
     beta: float = 0.02            # commitment weight (MoMask)
     ema_decay: float = 0.99
-    dead_threshold: float = 1.0   # EMA usage below this → code reset to a random latent
+    dead_fraction: float = 0.7    # EMA usage below this share of the mean → code reset
     quantizer_dropout: float = 0.2
 
     @property
@@ -60,6 +60,7 @@ class LossConfig:
     w_bone: float = 0.5           # bone length error, m
     w_com: float = 1.0            # CODA eq. 4 (distance in m, angle as a cosine)
     w_ktraj: float = 1.0          # CODA eq. 5 on KEY_JOINTS, m
+    w_fk: float = 1.0             # joints by FK of the decoded rotations (rest skeleton), m
     joint_scale: float = 10.0     # metres → decimetres, so joint losses weigh like feature L1
 
 
@@ -93,7 +94,8 @@ def from_dict(cls, d: dict):
 
 
 def runtime_config(vq: VQConfig, base: TransformerConfig,
-                   sampling: SamplingDefaults | None = None, trained: bool = True) -> dict:
+                   sampling: SamplingDefaults | None = None, trained: bool = True,
+                   precision: str = "fp32") -> dict:
     """The config.json next to the ONNX graphs: what the numpy sampling loops need
     ("trained": false marks placeholder exports the runtime must not serve)."""
     sampling = sampling or SamplingDefaults()
@@ -103,4 +105,5 @@ def runtime_config(vq: VQConfig, base: TransformerConfig,
         "max_tokens": base.max_tokens, "mask_id": base.mask_id, "downsample": vq.downsample,
         "feature_dim": FEATURE_DIM, "text_dim": base.text_dim, "parts": list(PARTS),
         "cfg": asdict(sampling),
+        "precision": precision,   # "int8": the runtime loads base/residual.int8.onnx
     }

@@ -11,6 +11,9 @@ features: the `positions` and `root_height` blocks give every joint relative to 
   com        CODA eq. 4: (|COM − pelvis| error)² + (cos of the pelvis→COM elevation error)²,
              COM from `skeleton.SEGMENT_MASS` at segment centres (as `metrics.centre_of_mass`)
   ktraj      CODA eq. 5: L1 of the key joints (pelvis, wrists, toes) per frame
+  fk         L1 of the joints posed by forward kinematics of the decoded 6D rotations on the
+             rest skeleton (the path `features.decode` takes), so rotation errors are weighed
+             by how far they move joints down the chain
 """
 
 from __future__ import annotations
@@ -21,7 +24,7 @@ import torch.nn.functional as F
 
 from interplay.motion import metrics
 from interplay.motion import skeleton as sk
-from interplay.motion.features import SLICES, Normalizer
+from interplay.motion.features import ROT_JOINTS, SLICES, Normalizer
 
 from .config import LossConfig
 
@@ -39,6 +42,33 @@ def _com_weights() -> np.ndarray:
 COM_WEIGHTS = _com_weights()
 
 
+def sixd_to_matrix(d6: torch.Tensor) -> torch.Tensor:
+    """6D (..., 6) → rotations (..., 3, 3) by Gram–Schmidt, as `rotations.sixd_to_matrix`."""
+    b1 = F.normalize(d6[..., :3], dim=-1, eps=1e-8)
+    a2 = d6[..., 3:]
+    b2 = F.normalize(a2 - (b1 * a2).sum(-1, keepdim=True) * b1, dim=-1, eps=1e-8)
+    return torch.stack([b1, b2, torch.cross(b1, b2, dim=-1)], dim=-1)
+
+
+def fk_joints(feats: torch.Tensor, offsets: torch.Tensor) -> torch.Tensor:
+    """Denormalised features (B, T, 239) → joints (B, T, 22, 3) by FK of the 6D rotations on
+    offsets (22, 3), pelvis at (0, h, 0) in the heading frame."""
+    b, t, _ = feats.shape
+    rot = sixd_to_matrix(feats[..., SLICES["rotations"]].reshape(b, t, len(ROT_JOINTS), 6))
+    local = dict(zip(ROT_JOINTS, rot.unbind(2)))
+    eye = torch.eye(3, dtype=feats.dtype).expand(b, t, 3, 3)
+    glob, pos = [], []
+    for j, p in enumerate(sk.PARENTS):
+        r = local.get(j, eye)
+        if p < 0:
+            glob.append(r)
+            pos.append(F.pad(feats[..., SLICES["root_height"]], (1, 1)))
+        else:
+            glob.append(glob[p] @ r)
+            pos.append(pos[p] + (glob[p] @ offsets[j]))
+    return torch.stack(pos, 2)
+
+
 class MotionLoss(torch.nn.Module):
     def __init__(self, cfg: LossConfig, normalizer: Normalizer):
         super().__init__()
@@ -46,6 +76,7 @@ class MotionLoss(torch.nn.Module):
         self.register_buffer("mean", torch.from_numpy(normalizer.mean))
         self.register_buffer("std", torch.from_numpy(normalizer.std))
         self.register_buffer("com_w", torch.from_numpy(COM_WEIGHTS).float())
+        self.register_buffer("offsets", torch.from_numpy(sk.REST_OFFSETS).float())
 
     def joints(self, feats: torch.Tensor) -> torch.Tensor:
         """Denormalised features (B, T, 239) → root-relative joints (B, T, 22, 3), metres."""
@@ -84,8 +115,9 @@ class MotionLoss(torch.nn.Module):
             out["com"] = F.mse_loss(dp * s, dt * s) + F.mse_loss(cp, ct)
             key = list(sk.KEY_JOINTS)
             out["ktraj"] = F.l1_loss(jp[:, :, key], jt[:, :, key]) * s
+            out["fk"] = F.l1_loss(fk_joints(fp, self.offsets), fk_joints(ft, self.offsets)) * s
             total = total + (c.w_velocity * out["velocity"] + c.w_foot * out["foot"]
                              + c.w_bone * out["bone"] + c.w_com * out["com"]
-                             + c.w_ktraj * out["ktraj"])
+                             + c.w_ktraj * out["ktraj"] + c.w_fk * out["fk"])
         out["loss"] = total
         return out

@@ -9,6 +9,7 @@ import numpy as np
 import torch
 
 from interplay.motion.features import SLICES, Normalizer, decode
+from interplay.motion.kinematics import fit_to_skeleton
 from interplay.motion.metrics import clip_metrics
 
 from .config import PARTS
@@ -40,10 +41,11 @@ def position_joints(feats: np.ndarray) -> np.ndarray:
 
 def vq_report(vq: RVQVAE, tracks: list[Track], normalizer: Normalizer) -> dict:
     """MPJPE in mm over tracks (frame-weighted means): global and root-relative after FK of
-    the decoded rotations, and of the `positions` block itself (no FK); plausibility metrics
+    the decoded rotations, of the `positions` block itself (no FK) and of those positions
+    fitted to the skeleton (IK → FK, rigid bones); plausibility metrics
     of the FK joints, and the same metrics of the reference motion for comparison."""
     vq.eval()
-    err, err_rel, err_pos, frames, plaus, ref = [], [], [], [], [], []
+    err, err_rel, err_pos, err_ik, frames, plaus, ref = [], [], [], [], [], [], []
     for t in tracks:
         if len(t.features) < 2 * vq.cfg.downsample:
             continue
@@ -51,10 +53,13 @@ def vq_report(vq: RVQVAE, tracks: list[Track], normalizer: Normalizer) -> dict:
         gt, pred = decode(feats, t.offsets), decode(recon, t.offsets)
         d = np.linalg.norm(pred - gt, axis=-1)
         dr = np.linalg.norm((pred - pred[:, :1]) - (gt - gt[:, :1]), axis=-1)
-        dp = np.linalg.norm(position_joints(recon) - position_joints(feats), axis=-1)
+        pos_gt, pos = position_joints(feats), position_joints(recon)
+        dp = np.linalg.norm(pos - pos_gt, axis=-1)
+        dik = np.linalg.norm(fit_to_skeleton(pos, t.offsets)[0] - pos_gt, axis=-1)
         err.append(d.mean())
         err_rel.append(dr.mean())
         err_pos.append(dp.mean())
+        err_ik.append(dik.mean())
         frames.append(len(gt))
         plaus.append(clip_metrics([pred]))
         ref.append(clip_metrics([gt]))
@@ -63,7 +68,8 @@ def vq_report(vq: RVQVAE, tracks: list[Track], normalizer: Normalizer) -> dict:
     out = {"tracks": len(frames), "frames": int(sum(frames)),
            "mpjpe_mm": float(np.dot(w, err) * 1000), "mpjpe_root_relative_mm":
            float(np.dot(w, err_rel) * 1000),
-           "mpjpe_positions_mm": float(np.dot(w, err_pos) * 1000)}
+           "mpjpe_positions_mm": float(np.dot(w, err_pos) * 1000),
+           "mpjpe_positions_ik_mm": float(np.dot(w, err_ik) * 1000)}
     for k in PLAUSIBILITY:
         out[k] = float(np.dot(w, [m[k] for m in plaus]))
         out[f"reference_{k}"] = float(np.dot(w, [m[k] for m in ref]))

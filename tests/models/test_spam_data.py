@@ -16,7 +16,7 @@ from interplay.motion.metrics import centre_of_mass  # noqa: E402
 from models.spam.config import LossConfig  # noqa: E402
 from models.spam.data import (Track, build_tracks, fit_normalizer, mirror_joints,  # noqa: E402
                               mirror_text, part_texts, person_captions, person_prompt)
-from models.spam.losses import COM_WEIGHTS, MotionLoss  # noqa: E402
+from models.spam.losses import COM_WEIGHTS, MotionLoss, fk_joints  # noqa: E402
 
 
 def _clip(prompt_part: str):
@@ -92,7 +92,7 @@ def test_geometric_losses_vanish_at_the_target_and_grow_with_error():
     x = torch.from_numpy(norm.normalize(feats))[None]
     crit = MotionLoss(LossConfig(), norm)
     same = crit(x, x, torch.zeros(()), 0.02)
-    for k in ("recon", "velocity", "bone", "com", "ktraj"):
+    for k in ("recon", "velocity", "bone", "com", "ktraj", "fk"):
         assert float(same[k]) < 1e-5, k
     # joints from the features are root-relative: the pelvis sits at (0, h, 0)
     j = crit.joints(x * crit.std + crit.mean)
@@ -101,7 +101,19 @@ def test_geometric_losses_vanish_at_the_target_and_grow_with_error():
                                atol=1e-5)
     noisy = x + 0.3 * torch.randn_like(x)
     worse = crit(noisy, x, torch.zeros(()), 0.02)
-    for k in ("recon", "velocity", "bone", "ktraj", "foot"):
+    for k in ("recon", "velocity", "bone", "ktraj", "foot", "fk"):
         assert float(worse[k]) > float(same[k]), k
     off = crit.__class__(LossConfig(geometric=False), norm)(noisy, x, torch.zeros(()), 0.02)
     assert set(off) == {"recon", "commit", "loss"}
+
+
+def test_torch_fk_matches_feature_decoding():
+    clip = _clip("jumps")
+    feats = encode(clip.people[0], clip.offsets[0])
+    j = fk_joints(torch.from_numpy(feats)[None].double(), torch.from_numpy(sk.REST_OFFSETS))[0]
+    ref = decode(feats)                      # world frame, rest skeleton
+    j = j.numpy()
+    # same pose up to the heading/root placement: equal heights and pairwise distances
+    np.testing.assert_allclose(j[..., 1], ref[..., 1], atol=1e-6)
+    pair = lambda x: np.linalg.norm(x[:, :, None] - x[:, None], axis=-1)  # noqa: E731
+    np.testing.assert_allclose(pair(j), pair(ref), atol=1e-6)
