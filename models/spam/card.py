@@ -19,17 +19,18 @@ LABELS = {"spam": "**SPAM-VQ, shipped** (4 parts, with CCL, full budget)",
 
 def _recon_rows(numbers: dict) -> list[str]:
     rows = ["| model | MPJPE (mm) | root-relative MPJPE (mm) | positions-block MPJPE (mm) "
-            "| bone dev. (m) | foot skating (m/s) | ground pen. (m) | COM angle (°) | VQ steps "
-            "| final recon L1 |", "|---|---|---|---|---|---|---|---|---|---|"]
+            "| positions + IK MPJPE (mm) | bone dev. (m) | foot skating (m/s) | ground pen. (m) "
+            "| COM angle (°) | VQ steps | final recon L1 |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
     for name in LABELS:
         r, n = numbers[name]["recon"], numbers[name]
         rows.append(f"| {LABELS[name]} | {_f(r['mpjpe_mm'], 1)} | {_f(r['mpjpe_root_relative_mm'], 1)} "
-                    f"| {_f(r['mpjpe_positions_mm'], 1)} "
+                    f"| {_f(r['mpjpe_positions_mm'], 1)} | {_f(r.get('mpjpe_positions_ik_mm'), 1)} "
                     f"| {_f(r['bone_deviation'], 4)} | {_f(r['foot_skating'])} "
                     f"| {_f(r['ground_penetration'], 4)} | {_f(r['com_angle'], 1)} "
                     f"| {n['vq_steps']} | {_f(n['vq_final'].get('recon'))} |")
     r = numbers["spam"]["recon"]
-    rows.append(f"| reference (test motion itself) | 0 | 0 | 0 | {_f(r['reference_bone_deviation'], 4)} "
+    rows.append(f"| reference (test motion itself) | 0 | 0 | 0 | 0 | {_f(r['reference_bone_deviation'], 4)} "
                 f"| {_f(r['reference_foot_skating'])} | {_f(r['reference_ground_penetration'], 4)} "
                 f"| {_f(r['reference_com_angle'], 1)} | | |")
     return rows
@@ -83,13 +84,15 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         f"`features.part_feature_mask`), conv1d res-blocks width {vq['width']}, depth "
         f"{vq['depth']}, temporal downsampling {vq['downsample']}; per part Q = {vq['layers']} "
         f"residual layers of K = {vq['codes']} EMA codes (latent {vq['latent']}, decay "
-        f"{vq['ema_decay']}, dead-code reset), quantizer dropout {vq['quantizer_dropout']}, "
+        f"{vq['ema_decay']}, codes below {vq.get('dead_fraction', 'n/a')} of the mean usage reset "
+        f"to batch latents), quantizer dropout {vq['quantizer_dropout']}, "
         f"β = {vq['beta']}; one whole-body decoder from the concatenated part latents "
         f"({len(PARTS)} × {vq['latent']}) to 239 features. (Paper: Q = 6, K = 512, 128-d.)",
         "- Losses: L1 on normalised features + β·commitment + geometric/commonsense terms on "
         "root-relative joints from the denormalised `positions`/`root_height` blocks: joint "
         "velocity, foot contact, bone length, CODA eq. 4 COM (segment masses) and eq. 5 key-joint "
-        "trajectory (`models/spam/losses.py`). The `spam_nocs` ablation drops them.",
+        "trajectory, plus the joints posed by FK of the decoded 6D rotations on the rest skeleton "
+        "(`models/spam/losses.py`). The `spam_nocs` ablation drops them all.",
         f"- Base and residual transformers: d = {tr['d']}, {tr['blocks']} factorised blocks "
         f"(spatial attention over the 4 part tokens of a step, then temporal attention per part), "
         f"{tr['heads']} heads, MLP ×{tr['ff']}, dropout {tr['dropout']}; one text token per part "
@@ -105,7 +108,7 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         "## Training time on this machine",
         f"{numbers['machine']}; the CPU was shared with other engineers' jobs, so each stage ran "
         "for its wall-clock budget (`models/spam/pipeline.py` Budgets) and the step counts below "
-        "are what fitted.",
+        "are what fitted." + (f" **Note:** {numbers['note']}." if numbers.get("note") else ""),
         "",
         "| stage | seconds |", "|---|---|",
         *[f"| {k} | {v:.0f} |" for k, v in times.items()],
@@ -113,8 +116,9 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         "## Reconstruction on the test split (decoded to joints by FK on each track's offsets)",
         "MPJPE over all joints and frames, mm: after FK of the decoded rotations with the root "
         "trajectory integrated from the decoded velocities (global), the same with each frame's "
-        "pelvis subtracted (root-relative), and of the decoded `positions` block directly (no "
-        "FK). The three ablation rows ran the same number of steps with the same schedule. "
+        "pelvis subtracted (root-relative), of the decoded `positions` block directly (no "
+        "FK), and of those positions fitted to the track's skeleton (`kinematics.fit_to_skeleton`, "
+        "IK → FK: rigid bones). The three ablation rows ran the same number of steps with the same schedule. "
         "Physical plausibility via `interplay.motion.metrics.clip_metrics` on the FK joints "
         f"(frame-weighted means over {numbers['spam']['recon']['tracks']} test tracks).",
         "",

@@ -9,7 +9,10 @@
                   text (B, 4, 384) f32, cond (B,) f32     → logits (B, 4, n, K) f32
 
 plus normalizer.npz (features.Normalizer) and config.json (config.runtime_config).
-T must be a multiple of 4 and n ≤ max_tokens.
+T must be a multiple of 4 and n ≤ max_tokens. `base.int8.onnx` / `residual.int8.onnx` are the
+same transformers with int8 weights (onnxruntime dynamic quantization: MatMul weights per
+channel, activations quantized per call); config.json "precision" says which pair the
+runtime loads.
 
   python -m models.spam.export --ckpt models/cache/spam --out models/weights/spam
 """
@@ -112,8 +115,10 @@ def export_graph(module: nn.Module, name: str, inputs: tuple, out_dir: Path) -> 
 
 def export_all(vq: RVQVAE, base: SPAMTransformer, residual: SPAMTransformer,
                normalizer: Normalizer, out_dir: str | Path,
-               sampling: SamplingDefaults | None = None, trained: bool = True) -> Path:
-    """Write the four graphs, normalizer.npz and config.json to out_dir."""
+               sampling: SamplingDefaults | None = None, trained: bool = True,
+               int8: bool = True) -> Path:
+    """Write the four graphs (+ the int8 transformers when int8), normalizer.npz and
+    config.json (precision "int8" when they were written) to out_dir."""
     if not vq.cfg.parts:
         raise ValueError("only the 4-part VQ has the (B, 4, Q, n) contract")
     if base.cfg.residual or not residual.cfg.residual:
@@ -128,9 +133,46 @@ def export_all(vq: RVQVAE, base: SPAMTransformer, residual: SPAMTransformer,
                "base": Base(base), "residual": Residual(residual)}
     for name, module in modules.items():
         export_graph(module, name, inputs[name], out_dir)
+    if int8:
+        quantize_int8(out_dir)
     normalizer.save(out_dir / "normalizer.npz")
-    (out_dir / "config.json").write_text(
-        json.dumps(runtime_config(vq.cfg, base.cfg, sampling, trained), indent=1) + "\n")
+    config = runtime_config(vq.cfg, base.cfg, sampling, trained, "int8" if int8 else "fp32")
+    (out_dir / "config.json").write_text(json.dumps(config, indent=1) + "\n")
+    return out_dir
+
+
+INT8_GRAPHS = ("base", "residual")
+
+
+def quantize_int8(out_dir: str | Path) -> list[Path]:
+    """<graph>.int8.onnx next to each float transformer graph (dynamic quantization: int8
+    weights, activations quantized per call; the int8 MatMuls are ~2× faster on this CPU)."""
+    from onnxruntime.quantization import QuantType, quantize_dynamic
+
+    out = []
+    for name in INT8_GRAPHS:
+        src, dst = Path(out_dir) / f"{name}.onnx", Path(out_dir) / f"{name}.int8.onnx"
+        quantize_dynamic(str(src), str(dst), weight_type=QuantType.QInt8, per_channel=True)
+        out.append(dst)
+    return out
+
+
+def export_vq(vq: RVQVAE, normalizer: Normalizer, out_dir: str | Path, note: str) -> Path:
+    """Only the VQ graphs (reconstruction rows of `interplay eval`, e.g. the single-codebook
+    ablation, whose codes are (B, 1, Q, n)) + normalizer.npz + config.json."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    motion = torch.randn(2, 24, FEATURE_DIM, generator=torch.Generator().manual_seed(0))
+    with torch.no_grad():
+        codes = vq.encode(motion)
+    export_graph(VQEncode(vq), "vq_encode", (motion,), out_dir)
+    export_graph(VQDecode(vq), "vq_decode", (codes,), out_dir)
+    normalizer.save(out_dir / "normalizer.npz")
+    (out_dir / "config.json").write_text(json.dumps(
+        {"trained": True, "graphs": ["vq_encode", "vq_decode"], "note": note,
+         "vq": {k: getattr(vq.cfg, k) for k in ("parts", "codes", "layers", "latent",
+                                                 "downsample")}}, indent=1) + "\n")
+    (out_dir / "MODEL_CARD.md").write_text(f"# {out_dir.name}: VQ graphs only\n\n{note}.\n")
     return out_dir
 
 

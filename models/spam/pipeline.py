@@ -9,7 +9,8 @@ Stages (budgets in seconds at scale 1; the 2-core machine is shared, so steps fo
     spam_nocs    without the geometric/commonsense losses, + base/residual (smaller budgets)
     spam_single  single-codebook whole-body RVQ-VAE (reconstruction only)
   evaluator  models/evaluator/train.py main() when importable (another engineer's model)
-  export     models/weights/spam/ and models/weights/spam_nocs/ (ONNX, normalizer, config)
+  export     models/weights/spam/ and spam_nocs/ (ONNX incl. int8 transformers, normalizer,
+             config), spam_single/ (the ablation VQ graphs, for `interplay eval`)
   card       models/weights/spam/MODEL_CARD.md + metrics.json with the measured numbers
 """
 
@@ -24,13 +25,16 @@ from pathlib import Path
 
 import torch
 
+from interplay.motion.features import Normalizer
+
 from . import checkpoint
 from .card import write_card
 from .config import LossConfig, SamplingDefaults, TrainConfig, TransformerConfig, VQConfig
 from .data import CACHE_DIR, TextBank, fit_normalizer, load_tracks
-from .export import export_all
+from .export import export_all, export_vq
 from .report import codebook_usage, usage_summary, vq_report
-from .train import TokenBatches, encode_tracks, evaluate_transformer, train_transformer, train_vq
+from .train import (History, TokenBatches, encode_tracks, evaluate_transformer,
+                    train_transformer, train_vq)
 
 ROOT = Path(__file__).resolve().parents[2]
 WEIGHTS = ROOT / "models" / "weights"
@@ -38,11 +42,11 @@ WEIGHTS = ROOT / "models" / "weights"
 
 @dataclass(frozen=True)
 class Budgets:
-    vq: float = 780                 # seconds
-    base: float = 660
-    residual: float = 360
+    vq: float = 900                 # seconds
+    base: float = 900
+    residual: float = 420
     ablation_vq_steps: int = 250    # each ablation VQ (steps, capped by ablation_vq_cap s)
-    ablation_vq_cap: float = 360
+    ablation_vq_cap: float = 150
     base_nocs: float = 150
     residual_nocs: float = 90
 
@@ -67,34 +71,49 @@ def _train_stack(name: str, vq_cfg: VQConfig, loss_cfg: LossConfig, vq_train: Tr
     times[f"{name}/vq"] = time.perf_counter() - t0
     checkpoint.save(vq, out_dir / "vq.pt", loss=asdict(loss_cfg))
     normalizer.save(out_dir / "normalizer.npz")
-    res = {"vq": vq, "vq_steps": hist.steps, "vq_final": {k: hist.last(k) for k in hist.rows[-1]
-                                                           if k not in ("step", "t")}}
-    test = [t for t in tracks if t.split == "test"]
+    transformers = {}
+    if budgets:
+        batches = token_batches(vq, tracks, normalizer, bank)
+        for kind, seconds in zip(("base", "residual"), budgets):
+            t0 = time.perf_counter()
+            cfg = replace(TRANSFORMER, residual=kind == "residual")
+            transformers[kind] = train_transformer(cfg, replace(TR_TRAIN, seconds=seconds),
+                                                   batches["train"], log, name=f"{name}/{kind}")
+            times[f"{name}/{kind}"] = time.perf_counter() - t0
+            checkpoint.save(transformers[kind][0], out_dir / f"{kind}.pt")
+    return stack_numbers(name, vq, hist, transformers, tracks, normalizer, bank, times, log)
+
+
+def token_batches(vq, tracks, normalizer, bank) -> dict[str, TokenBatches]:
+    """Token windows of the train and val tracks under one VQ."""
+    out = {}
+    for split, tc in (("train", TR_TRAIN), ("val", VQ_TRAIN)):
+        part = [t for t in tracks if t.split == split]
+        out[split] = TokenBatches(part, encode_tracks(vq, part, normalizer), bank, tc,
+                                  TRANSFORMER.max_tokens, vq.cfg.downsample)
+    return out
+
+
+def stack_numbers(name: str, vq, vq_hist: History, transformers: dict, tracks, normalizer,
+                  bank, times: dict, log) -> dict:
+    """Models and measured numbers of one trained variant: test reconstruction, train code
+    usage, and per transformer (`transformers`: kind → (model, History)) its final train and
+    validation CE/accuracy."""
+    res = {"vq": vq, "vq_steps": vq_hist.steps,
+           "vq_final": {k: vq_hist.last(k) for k in vq_hist.rows[-1] if k not in ("step", "t")}}
     t0 = time.perf_counter()
-    res["recon"] = vq_report(vq, test, normalizer)
+    res["recon"] = vq_report(vq, [t for t in tracks if t.split == "test"], normalizer)
     train_tracks = [t for t in tracks if t.split == "train"]
-    train_codes = encode_tracks(vq, train_tracks, normalizer)
-    res["usage"] = codebook_usage(train_codes, vq_cfg.codes)
+    res["usage"] = codebook_usage(encode_tracks(vq, train_tracks, normalizer), vq.cfg.codes)
     times[f"{name}/vq_report"] = time.perf_counter() - t0
     log(f"[{name}] recon {res['recon']}")
-    if not budgets:
-        return res
-    val = [t for t in tracks if t.split == "val"]
-    val_batches = TokenBatches(val, encode_tracks(vq, val, normalizer), bank, VQ_TRAIN,
-                               TRANSFORMER.max_tokens, vq_cfg.downsample)
-    batches = TokenBatches(train_tracks, train_codes, bank, TR_TRAIN, TRANSFORMER.max_tokens,
-                           vq_cfg.downsample)
-    for kind, seconds in zip(("base", "residual"), budgets):
-        t0 = time.perf_counter()
-        cfg = replace(TRANSFORMER, residual=kind == "residual")
-        model, hist = train_transformer(cfg, replace(TR_TRAIN, seconds=seconds), batches, log,
-                                        name=f"{name}/{kind}")
-        times[f"{name}/{kind}"] = time.perf_counter() - t0
-        checkpoint.save(model, out_dir / f"{kind}.pt")
+    if transformers:
+        val = token_batches(vq, tracks, normalizer, bank)["val"]
+    for kind, (model, hist) in transformers.items():
         res[kind] = model
         res[f"{kind}_steps"] = hist.steps
         res[f"{kind}_final"] = {"ce": hist.last("ce", 20), "acc": hist.last("acc", 20)}
-        res[f"{kind}_val"] = evaluate_transformer(model, val_batches)
+        res[f"{kind}_val"] = evaluate_transformer(model, val)
         log(f"[{name}/{kind}] val {res[f'{kind}_val']}")
     return res
 
@@ -141,18 +160,29 @@ def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), log=print,
     single = _train_stack("spam_single", replace(VQ, parts=False, latent=2 * VQ.latent),
                           LossConfig(), short, (), **stack)
     evaluator = _evaluator(times, log) if run_evaluator else "not run (run_evaluator=False)"
+    results = {"spam": spam, "spam_short": spam_short, "spam_nocs": nocs, "spam_single": single}
+    numbers = finish(results, tracks, normalizer, bank, times, b, evaluator, weights_dir, start)
+    log(f"[done] {times['total'] / 60:.1f} min")
+    return numbers
 
+
+def finish(results: dict, tracks, normalizer, bank, times: dict, budgets: Budgets,
+           evaluator: str, weights_dir: Path, start: float, note: str | None = None) -> dict:
+    """Export the shipped variants, write metrics.json and the model cards; the numbers."""
     t0 = time.perf_counter()
-    for name, res in (("spam", spam), ("spam_nocs", nocs)):
+    for name in ("spam", "spam_nocs"):
+        res = results[name]
         export_all(res["vq"], res["base"], res["residual"], normalizer, weights_dir / name)
+    export_vq(results["spam_single"]["vq"], normalizer, weights_dir / "spam_single",
+              "single-codebook (whole-body) VQ ablation: reconstruction only "
+              "(`interplay eval` row single_vq); numbers in models/weights/spam/MODEL_CARD.md")
     times["export"] = time.perf_counter() - t0
-    times["total"] = time.perf_counter() - start
-
+    times.setdefault("total", time.perf_counter() - start)
     numbers = {
         "machine": f"{platform.machine()}, {torch.get_num_threads()} torch threads, "
                    f"torch {torch.__version__}",
         "times_s": {k: round(v, 1) for k, v in times.items()},
-        "budgets_s": asdict(b), "evaluator": evaluator,
+        "budgets_s": asdict(budgets), "evaluator": evaluator,
         "sampling": asdict(SamplingDefaults()),
         "data": {"tracks": len(tracks), "train_frames": sum(len(t.features) for t in tracks
                                                             if t.split == "train"),
@@ -160,8 +190,9 @@ def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), log=print,
         "configs": {"vq": asdict(VQ), "transformer": asdict(TRANSFORMER),
                     "vq_train": asdict(VQ_TRAIN), "transformer_train": asdict(TR_TRAIN)},
     }
-    for name, res in (("spam", spam), ("spam_short", spam_short), ("spam_nocs", nocs),
-                      ("spam_single", single)):
+    if note:
+        numbers["note"] = note
+    for name, res in results.items():
         numbers[name] = {k: v for k, v in res.items()
                          if k not in ("vq", "base", "residual", "usage")}
         numbers[name]["usage"] = usage_summary(res["usage"])
@@ -169,5 +200,4 @@ def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), log=print,
     (weights_dir / "spam" / "metrics.json").write_text(json.dumps(numbers, indent=1) + "\n")
     write_card(numbers, weights_dir / "spam" / "MODEL_CARD.md",
                weights_dir / "spam_nocs" / "MODEL_CARD.md")
-    log(f"[done] {times['total'] / 60:.1f} min")
     return numbers

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 import torch
@@ -216,9 +217,16 @@ def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--all", action="store_true", help="train and export everything")
     ap.add_argument("--scale", type=float, default=1.0, help="multiply every time budget")
+    ap.add_argument("--resume", metavar="LOG", type=Path,
+                    help="export and document a run that trained every stage but stopped "
+                         "before its export, from its checkpoints and log (models/spam/resume.py)")
     a = ap.parse_args(argv)
+    if a.resume:
+        from .resume import resume
+        resume(a.resume)
+        return
     if not a.all:
-        ap.error("only --all is supported; see models/spam/pipeline.py for the stages")
+        ap.error("pass --all (train everything) or --resume LOG; stages: models/spam/pipeline.py")
     from .pipeline import run_all
     run_all(scale=a.scale)
 

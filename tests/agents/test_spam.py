@@ -226,4 +226,25 @@ def test_missing_or_broken_weights_fail_to_load(tmp_path):
     shutil.copytree(DEFAULT_DIR, broken)
     (broken / "base.onnx").write_bytes(b"not an onnx graph")
     with pytest.raises(ValueError, match="base.onnx"):
-        SpamRuntime.load(broken)
+        SpamRuntime.load(broken, precision="fp32")
+    (broken / "base.int8.onnx").write_bytes(b"not an onnx graph")
+    with pytest.raises(ValueError, match=r"base\.int8\.onnx"):
+        SpamRuntime.load(broken, precision="int8")
+    (broken / "residual.int8.onnx").unlink()
+    with pytest.raises(FileNotFoundError, match="residual.int8.onnx"):
+        SpamRuntime.load(broken, precision="int8")
+
+
+def test_shipped_int8_transformers_agree_with_float():
+    """The quantized graphs pick the float graphs' arg-max code at most masked positions of a
+    real prompt's first decoding step."""
+    f32, i8 = (SpamRuntime.load(precision=p) for p in ("fp32", "int8"))
+    assert i8.config.precision == "int8" and f32.config.precision == "fp32"
+    k, n = f32.config.K, 30
+    tokens = np.full((1, 4, n), f32.config.mask_id, np.int64)
+    tokens[:, :, ::3] = np.random.default_rng(0).integers(0, k, (1, 4, len(range(0, n, 3))))
+    text = f32.text_embedding("a person walks forward")[None].astype(np.float32)
+    cond = np.ones(1, np.float32)
+    a, b = f32._base(tokens, text, cond), i8._base(tokens, text, cond)
+    agree = (a.argmax(-1) == b.argmax(-1))[tokens == f32.config.mask_id].mean()
+    assert agree > 0.85, agree

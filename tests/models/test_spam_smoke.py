@@ -19,6 +19,7 @@ from models.spam import checkpoint  # noqa: E402
 from models.spam.config import (LossConfig, TrainConfig, TransformerConfig,  # noqa: E402
                                 VQConfig)
 from models.spam.data import TextBank, fit_normalizer, load_tracks  # noqa: E402
+from models.spam.bench_torch import bench, bench_onnx, graph_inputs  # noqa: E402
 from models.spam.export import example_inputs, export_all  # noqa: E402
 from models.spam.train import (TokenBatches, encode_tracks, mask_tokens,  # noqa: E402
                                train_transformer, train_vq)
@@ -177,6 +178,20 @@ def test_onnx_export_matches_torch(trained, tmp_path):
     codes = enc.run(None, {"motion": x})[0]
     y = dec.run(None, {"codes": codes})[0]
     assert codes.shape == (1, 4, 3, 10) and y.shape == x.shape
+    # the int8 transformers the export ships next to the float ones, and the config says so
+    assert cfg["precision"] == "int8"
+    for name in ("base", "residual"):
+        sess = ort.InferenceSession(str(out / f"{name}.int8.onnx"),
+                                    providers=["CPUExecutionProvider"])
+        got = sess.run(None, {n: a.numpy() for n, a in zip(expected_io[name][0], inputs[name])})[0]
+        with torch.no_grad():
+            ref = torch_fns[name](*inputs[name]).numpy()
+        assert got.shape == ref.shape and np.abs(got - ref).mean() < 0.1 * np.abs(ref).mean()
+    # torch eager vs onnxruntime timing covers every graph in both precisions
+    ms = bench_onnx(out, graph_inputs(trained["vq"], 5), runs=1, warmup=0, threads=1)
+    assert set(ms["fp32"]) == set(ms["int8"]) == set(torch_fns)
+    assert set(bench(trained["vq"], trained["base"], trained["residual"], 5, runs=1,
+                     warmup=0)) == set(torch_fns)
 
 
 def test_checkpoint_round_trip(trained, tmp_path):

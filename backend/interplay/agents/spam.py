@@ -67,11 +67,12 @@ class SpamRuntime:
         self._encoder = encoder
 
     @classmethod
-    def load(cls, weights_dir: str | Path = DEFAULT_DIR, encoder=None, threads: int = 2
-             ) -> "SpamRuntime":
+    def load(cls, weights_dir: str | Path = DEFAULT_DIR, encoder=None, threads: int = 2,
+             precision: str | None = None) -> "SpamRuntime":
         """Sessions built once; the graphs are run once on a tiny input so a broken export
-        fails here (ValueError / FileNotFoundError), not on the first request."""
-        config, normalizer, graphs = load_files(weights_dir, threads)
+        fails here (ValueError / FileNotFoundError), not on the first request. precision:
+        "fp32" | "int8" transformers (None: what config.json ships)."""
+        config, normalizer, graphs = load_files(weights_dir, threads, precision)
         runtime = cls(config, normalizer, graphs, encoder)
         runtime.check()
         return runtime

@@ -7,6 +7,8 @@ the contract the training code exports (models/spam/export.py):
                                                                 → logits (B, 4, n, K)
     residual.onnx   tokens (B, 4, Q, n) int64, layer (B,) int64, text, cond → logits (B, 4, n, K)
 
+base.int8.onnx / residual.int8.onnx: the same transformers with int8 weights, loaded instead
+when config.json says "precision": "int8" (or the caller asks for it).
 Sessions are built once, two intra-op threads each (this is a 2-core CPU).
 """
 
@@ -20,6 +22,8 @@ import numpy as np
 
 from ..motion.features import FEATURE_DIM
 
+PRECISIONS = ("fp32", "int8")
+INT8_GRAPHS = ("base", "residual")   # the transformers; the VQ graphs stay float
 GRAPH_INPUTS: dict[str, tuple[str, ...]] = {
     "vq_encode": ("motion",),
     "vq_decode": ("codes",),
@@ -43,12 +47,15 @@ class SpamConfig:
     steps: int = 10              # masked decoding steps
     temperature: float = 1.0
     topk_ratio: float = 0.9      # sample from the top (1 − ratio)·K codes only (MoMask)
+    precision: str = "fp32"      # "int8": base/residual from <graph>.int8.onnx (quantized)
 
     def __post_init__(self):
         if self.mask_id == -1:
             object.__setattr__(self, "mask_id", self.K)
         if self.K < 2 or self.Q < 1 or self.max_tokens < 1 or self.downsample < 1:
             raise ValueError(f"implausible SPAM config: {self}")
+        if self.precision not in PRECISIONS:
+            raise ValueError(f"precision must be one of {PRECISIONS}, got {self.precision!r}")
         if self.feature_dim != FEATURE_DIM:
             raise ValueError(f"SPAM weights are for {self.feature_dim}-d features; this code "
                              f"encodes {FEATURE_DIM}-d features")
@@ -105,29 +112,38 @@ class OnnxGraph:
         return self.session.run([self.output], {k: feeds[k] for k in self.inputs})[0]
 
 
-def load_files(weights_dir: str | Path, threads: int = 2):
-    """(SpamConfig, Normalizer, {graph name: OnnxGraph}) from a weights directory; ValueError
-    (FileNotFoundError for a missing file) saying what is wrong."""
+def graph_file(name: str, precision: str) -> str:
+    return f"{name}.int8.onnx" if precision == "int8" and name in INT8_GRAPHS else f"{name}.onnx"
+
+
+def load_files(weights_dir: str | Path, threads: int = 2, precision: str | None = None):
+    """(SpamConfig, Normalizer, {graph name: OnnxGraph}) from a weights directory, with the
+    transformers of `precision` (None: config.json's); ValueError (FileNotFoundError for a
+    missing file) saying what is wrong."""
     from ..motion.features import Normalizer
 
     root = Path(weights_dir)
     if not root.is_dir():
         raise FileNotFoundError(f"{root}: no SPAM weights directory")
-    needed = ["config.json", "normalizer.npz"] + [f"{g}.onnx" for g in GRAPH_INPUTS]
-    missing = [n for n in needed if not (root / n).is_file()]
-    if missing:
-        raise FileNotFoundError(f"{root}: missing {', '.join(missing)}")
+    if not (root / "config.json").is_file():
+        raise FileNotFoundError(f"{root}: missing config.json")
     try:
-        config = SpamConfig.from_json(json.loads((root / "config.json").read_text()))
+        raw = json.loads((root / "config.json").read_text())
+        config = SpamConfig.from_json({**raw, "precision": precision or raw.get("precision", "fp32")}
+                                      if isinstance(raw, dict) else raw)
     except (json.JSONDecodeError, TypeError) as exc:
         raise ValueError(f"{root / 'config.json'}: {exc}") from None
+    files = {g: graph_file(g, config.precision) for g in GRAPH_INPUTS}
+    missing = [n for n in ["normalizer.npz", *files.values()] if not (root / n).is_file()]
+    if missing:
+        raise FileNotFoundError(f"{root}: missing {', '.join(missing)}")
     normalizer = Normalizer.load(root / "normalizer.npz")
     graphs = {}
     for name, inputs in GRAPH_INPUTS.items():
         try:
-            graphs[name] = OnnxGraph(root / f"{name}.onnx", inputs, threads)
+            graphs[name] = OnnxGraph(root / files[name], inputs, threads)
         except ValueError:
             raise
         except Exception as exc:  # onnxruntime's own errors: a broken or foreign file
-            raise ValueError(f"{root / (name + '.onnx')}: cannot load ({exc})") from None
+            raise ValueError(f"{root / files[name]}: cannot load ({exc})") from None
     return config, normalizer, graphs

@@ -3,7 +3,8 @@
   real       the captured test motions themselves
   retrieval  the retrieval generator (`agents.generator`) over the TRAIN clips only, so it
              cannot return a test capture
-  spam       SPAM (`agents.spam.SpamRuntime`), models/weights/spam
+  spam       SPAM (`agents.spam.SpamRuntime`), models/weights/spam, as shipped (int8 transformers)
+  spam_fp32  the same weights with the float transformers (what the int8 graphs quantize)
   spam_nocs  SPAM trained without the commonsense losses, models/weights/spam_nocs
   spam_vq    reconstruction: test motions encoded and decoded by SPAM's part RVQ-VAE
   single_vq  reconstruction: the same through the single-codebook (whole-body) VQ ablation
@@ -24,7 +25,7 @@ from ..motion.kinematics import fit_offsets
 from ..motion.skeleton import FPS
 
 WEIGHTS = Path(__file__).resolve().parents[3] / "models" / "weights"
-ROW_NAMES = ("real", "retrieval", "spam", "spam_nocs", "spam_vq", "single_vq")
+ROW_NAMES = ("real", "retrieval", "spam", "spam_fp32", "spam_nocs", "spam_vq", "single_vq")
 # Directories the single-codebook ablation may be exported to (first found wins).
 SINGLE_VQ_DIRS = ("spam_single", "single_vq", "vq_single")
 
@@ -72,10 +73,13 @@ def _retrieval(clips) -> Row:
     return Row("retrieval", "generated", generate=generate, source="train-split captures")
 
 
-def _spam(name: str, weights: Path) -> Row:
+def _spam(name: str, weights: Path, precision: str | None = None) -> Row:
     _trained(weights)
     from ..agents.spam import SpamRuntime
-    rt = SpamRuntime.load(weights, threads=1)
+    try:
+        rt = SpamRuntime.load(weights, threads=1, precision=precision)
+    except FileNotFoundError as exc:
+        raise Skip(str(exc)) from None
 
     def edit(joints, parts, prompt, seed, context):
         return rt.edit_parts(joints, parts, prompt, seed, context=context)
@@ -119,6 +123,8 @@ def load_row(name: str, clips) -> Row:
         return _retrieval(clips)
     if name in ("spam", "spam_nocs"):
         return _spam(name, WEIGHTS / name)
+    if name == "spam_fp32":
+        return _spam(name, WEIGHTS / "spam", precision="fp32")
     if name == "spam_vq":
         return _vq(name, WEIGHTS / "spam")
     if name == "single_vq":
