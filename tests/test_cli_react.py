@@ -39,3 +39,22 @@ def test_react_writes_a_pair(tmp_path, capsys):
 def test_react_bad_file(tmp_path, capsys):
     assert main(["react", str(tmp_path / "none.json"), "--out", str(tmp_path / "o.json")]) == 2
     assert "no such file" in capsys.readouterr().err
+
+
+def test_eval_react_real_row_on_val(capsys):
+    """`interplay eval-react --split val --rows real`: the pair evaluator's FID of the train
+    windows against the val windows, per set, and IF per composed kind."""
+    assert main(["eval-react", "--split", "val", "--rows", "real", "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["split"] == "val" and set(report["sets"]) == {"real", "synthetic"}
+    for rows in report["sets"].values():
+        assert rows["real"]["fid"] >= 0 and rows["real"]["fid_stats"] >= 0
+    kinds = report["sets"]["synthetic"]["real"]["per_kind"]
+    assert {"hug", "handshake"} <= set(kinds) and kinds["hug"]["if"] > kinds["wave"]["if"]
+
+
+@pytest.mark.parametrize("args", [["--rows", "bogus"], ["--sampling", "guidance"],
+                                  ["--sampling", "colour=3"], ["--sampling", "steps=0"]])
+def test_eval_react_bad_options(args, capsys):
+    assert main(["eval-react", *args]) == 2
+    assert "error" in capsys.readouterr().err.lower()

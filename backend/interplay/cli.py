@@ -299,9 +299,25 @@ def cmd_react(args) -> int:
 
 
 def cmd_eval_react(args) -> int:
+    from dataclasses import replace as _replace
+
+    from .agents.reaction import get_reaction_model
     from .agents.reaction_eval import ROWS, format_table, run_eval_react
     try:
-        report = run_eval_react(ROWS, repeats=args.repeats, seed=args.seed,
+        rows = tuple(args.rows.split(",")) if args.rows else ROWS
+        if any(r not in ROWS for r in rows):
+            raise ValueError(f"--rows: expected some of {','.join(ROWS)}, got {args.rows!r}")
+        model = get_reaction_model()
+        sampling = model.sampling
+        for item in args.sampling or ():
+            key, _, value = item.partition("=")
+            if key not in sampling.__dataclass_fields__ or not value:
+                raise ValueError(f"--sampling {item!r}: expected KEY=VALUE with KEY one of "
+                                 f"{', '.join(sampling.__dataclass_fields__)}")
+            kind = type(getattr(sampling, key))
+            sampling = _replace(sampling, **{key: kind(float(value)) if kind is int else kind(value)})
+        report = run_eval_react(rows, repeats=args.repeats, seed=args.seed, model=model,
+                                sampling=sampling, split=args.split,
                                 log=lambda m: print(m, file=sys.stderr))
     except (FileNotFoundError, ValueError) as exc:
         raise CliError(str(exc)) from None
@@ -410,6 +426,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--repeats", type=int, default=2, help="sampling seeds per row (default 2)")
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--split", choices=("test", "val"), default="test",
+                   help="val: for choosing sampling settings (never tune on test)")
+    p.add_argument("--rows", help="comma-separated subset of the rows (default all)")
+    p.add_argument("--sampling", action="append", metavar="KEY=VALUE",
+                   help="override a sampling setting, e.g. guidance=0.5 (repeatable)")
     p.set_defaults(func=cmd_eval_react)
 
     from .eval.pair_cli import add_eval_pair

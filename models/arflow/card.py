@@ -8,17 +8,24 @@ from pathlib import Path
 
 
 def _table(report: dict) -> list[str]:
-    cols = ("fid", "iv_cm3", "if", "contact_frames", "foot_skating")
+    cols = ("fid", "fid_stats", "iv_cm3", "if", "contact_frames", "foot_skating")
     lines = []
     for name, rows in report["sets"].items():
         kind = "composed pairs — SYNTHETIC" if name == "synthetic" else "captured salsa pairs"
         lines += ["", f"**{name}** ({kind}; {rows['windows']} test windows of "
                   f"{report['window']} frames, both role orders; {report['repeats']} seeds)", "",
-                  "| row | FID | IV (cm³/frame) | IF | contact frames | foot skating (m/s) |",
-                  "|---|---|---|---|---|---|"]
+                  "| row | FID (pair evaluator) | FID (statistics) | IV (cm³/frame) | IF | "
+                  "contact frames | foot skating (m/s) |", "|---|---|---|---|---|---|---|"]
         for row, r in rows.items():
             if row != "windows":
-                lines.append(f"| {row} | " + " | ".join(f"{r[c]:.3f}" for c in cols) + " |")
+                lines.append(f"| {row} | " + " | ".join(f"{r[c]:.3f}" if c in r else "-"
+                                                        for c in cols) + " |")
+        kinds = list(rows.get("real", {}).get("per_kind", {}))
+        if kinds:
+            lines += ["", "IF per composed kind:", "", "| row | " + " | ".join(kinds) + " |",
+                      "|---" * (len(kinds) + 1) + "|"]
+            lines += [f"| {row} | " + " | ".join(f"{r['per_kind'][k]['if']:.3f}" for k in kinds)
+                      + " |" for row, r in rows.items() if row != "windows" and "per_kind" in r]
     return lines
 
 
@@ -55,7 +62,8 @@ def write_card(weights: Path, ckpt_dir: Path) -> Path:
     ev = Path(ckpt_dir) / "eval_react.json"
     if ev.exists():
         report = json.loads(ev.read_text())
-        lines += ["`interplay eval-react --json` (FID on a statistics embedding, see "
+        lines += ["`interplay eval-react --json` (FID from the learned pair evaluator, "
+                  "models/weights/pair_evaluator; the statistics FID as a second column; see "
                   "docs/reaction.md):"] + _table(report)
     else:
         lines.append("Run `interplay eval-react` for FID, IV, IF, contacts and skating.")

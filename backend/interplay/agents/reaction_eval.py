@@ -8,14 +8,16 @@ Rows: real (the captured reactor), no_guidance (plain Euler x-prediction samplin
 guidance (penetration guidance on x̂₁, γ = 1: the plain Euler step from the guided x̂₁) and
 guidance_reproject (guidance + ARFlow's reprojection towards the real start, γ < 1).
 
-FID: no pair-motion evaluator exists in the project, so a window is embedded by statistics of
-the reactor and of the pair (the reactor's joints in the actor's frame: mean and std over
-time; its mean joint speeds; the relative root (lateral, forward, sin/cos of the yaw
-difference): mean and std; the mean pelvis/hands/feet distance map), standardised and reduced
-to 16 dims by PCA, both fitted on the train split's windows (captured and composed). FID is
-the Fréchet distance between the generated and the captured test windows in that space; the
-real row compares the train split's windows of the same kind with the test split's (a floor
-for the set size and the split shift).
+FID: the learned pair evaluator (`agents.pair_evaluator`, contrastive text ↔ pair windows
+trained on the train split): each (actor, reactor) window is embedded as a pair and FID is the
+Fréchet distance between the generated and the captured test windows' embeddings; the real
+row compares the train split's windows of the same set (captured or composed) with the test
+split's (a floor for the
+set size and the split shift). `fid_stats` is the earlier statistics FID, kept as a second
+column for continuity: each window embedded by statistics of the reactor and of the pair (the
+reactor's joints in the actor's frame: mean and std over time; its mean joint speeds; the
+relative root: mean and std; the mean pelvis/hands/feet distance map), standardised and
+PCA-reduced to 16 dims, both fitted on the train split's windows.
 IV (mean cm³ per frame), IF (share of frames), contact frames (hand within 3 cm of the other's
 body) and foot skating (m/s of planted feet) are `motion.metrics.clip_metrics` on the pair.
 """
@@ -31,6 +33,7 @@ from ..motion import skeleton as sk
 from ..motion.kinematics import fit_to_skeleton
 from ..motion.metrics import clip_metrics, person_metrics
 from ..motion.pairs import distance_map, pair_windows, relative_root
+from .pair_evaluator import PairEvaluator, load_pair_evaluator
 from .reaction import ReactionModel, SamplingConfig, get_reaction_model, sample_windows
 
 WINDOW, STRIDE, PCA_DIMS = 40, 20, 16
@@ -43,6 +46,7 @@ class TestPairs:
     reactor: np.ndarray    # (N, L, 22, 3) captured
     text: np.ndarray       # (N, 384)
     synthetic: np.ndarray  # (N,) bool
+    kind: np.ndarray       # (N,) str: "salsa" or the composed clip's kind (hug, handshake, …)
 
 
 def test_pairs(split: str = "test", stride: int = STRIDE, clips=None) -> TestPairs:
@@ -51,10 +55,11 @@ def test_pairs(split: str = "test", stride: int = STRIDE, clips=None) -> TestPai
     clips = [c for c in (clips or default_clips()) if c.split == split and len(c.people) == 2]
     w = pair_windows(clips, WINDOW, stride, roles="both", mirror=False)
     prompts = {c.id: c.prompt for c in clips}
+    kinds = {c.id: (c.meta.get("kind", c.label) if c.synthetic else "salsa") for c in clips}
     table = {i: prompt_embedding(prompts[i]) for i in set(w.clip_ids)}
     text = np.stack([table[i] for i in w.clip_ids]) if len(w) else np.zeros((0, 384), np.float32)
     return TestPairs(w.joints[:, 0].astype(np.float64), w.joints[:, 1].astype(np.float64),
-                     text, w.synthetic)
+                     text, w.synthetic, np.array([kinds[i] for i in w.clip_ids], dtype=object))
 
 
 def window_stats(actor: np.ndarray, reactor: np.ndarray) -> np.ndarray:
@@ -94,17 +99,29 @@ def fid(a: np.ndarray, b: np.ndarray) -> float:
                  - 2 * np.sum(np.sqrt(np.clip(ev, 0, None))))
 
 
-def pair_scores(actor: np.ndarray, reactor: np.ndarray) -> dict:
-    """Mean IV, IF, contact frames per window, reactor foot skating and bone deviation."""
+SCORES = ("iv_cm3", "if", "contact_frames", "foot_skating", "bone_deviation")
+
+
+def window_scores(actor: np.ndarray, reactor: np.ndarray) -> np.ndarray:
+    """Per window (N, 5): IV, IF, contact frames, reactor foot skating and bone deviation."""
     rows = []
     for a, r in zip(actor, reactor):
         m = clip_metrics([a, r])
         p = person_metrics(r)
         rows.append([m["intersection_volume"], m["intersection_frequency"], m["contact_frames"],
                      p["foot_skating"], p["bone_deviation"]])
-    v = np.mean(rows, axis=0)
-    return {"iv_cm3": float(v[0]), "if": float(v[1]), "contact_frames": float(v[2]),
-            "foot_skating": float(v[3]), "bone_deviation": float(v[4])}
+    return np.asarray(rows, dtype=np.float64).reshape(-1, len(SCORES))
+
+
+def pair_scores(actor: np.ndarray, reactor: np.ndarray, kinds: np.ndarray | None = None) -> dict:
+    """Mean scores over the windows; with kinds (N,) also "per_kind": {kind: {iv_cm3, if}}."""
+    rows = window_scores(actor, reactor)
+    out = dict(zip(SCORES, map(float, rows.mean(axis=0))))
+    if kinds is not None:
+        out["per_kind"] = {str(k): {"iv_cm3": float(rows[kinds == k, 0].mean()),
+                                    "if": float(rows[kinds == k, 1].mean())}
+                           for k in sorted(set(kinds))}
+    return out
 
 
 def generate(model: ReactionModel, pairs: TestPairs, row: str, seed: int,
@@ -124,33 +141,50 @@ def generate(model: ReactionModel, pairs: TestPairs, row: str, seed: int,
     return np.stack([fit_to_skeleton(r)[0] for r in raw])
 
 
+def pair_embedding(ev: PairEvaluator, actor: np.ndarray, reactor: np.ndarray) -> np.ndarray:
+    """Pair evaluator embeddings (N, E) of windows with the actor as the first person."""
+    return ev.embed(np.stack([actor, reactor], axis=1))
+
+
 def run_eval_react(rows=ROWS, repeats: int = 2, seed: int = 0, model: ReactionModel | None = None,
-                   sampling: SamplingConfig | None = None, split: str = "test", log=None) -> dict:
+                   sampling: SamplingConfig | None = None, split: str = "test", log=None,
+                   evaluator: PairEvaluator | None = None) -> dict:
     model = model or get_reaction_model()
+    ev = evaluator or load_pair_evaluator()
     train = test_pairs("train", stride=40)
     train_stats = window_stats(train.actor, train.reactor)
+    train_emb = pair_embedding(ev, train.actor, train.reactor)
     emb = Embedding(train_stats)
     pairs = test_pairs(split)
     report = {"split": split, "window": WINDOW, "stride": STRIDE, "repeats": repeats,
               "sampling": vars(sampling or model.sampling), "sets": {}}
     for name, sel in (("real", ~pairs.synthetic), ("synthetic", pairs.synthetic)):
-        sub = TestPairs(pairs.actor[sel], pairs.reactor[sel], pairs.text[sel], pairs.synthetic[sel])
+        sub = TestPairs(pairs.actor[sel], pairs.reactor[sel], pairs.text[sel], pairs.synthetic[sel],
+                        pairs.kind[sel])
+        kinds = sub.kind if name == "synthetic" else None
         if not len(sub.actor):
             continue
-        ref = emb(window_stats(sub.actor, sub.reactor))
+        ref_stats = emb(window_stats(sub.actor, sub.reactor))
+        ref = pair_embedding(ev, sub.actor, sub.reactor)
         out = {"windows": int(len(sub.actor))}
         for row in rows:
             t0 = time.perf_counter()
             if row == "real":
-                tr = emb(train_stats[train.synthetic == (name == "synthetic")])
-                res = {"fid": fid(tr, ref), **pair_scores(sub.actor, sub.reactor)}
+                same = train.synthetic == (name == "synthetic")
+                res = {"fid": fid(train_emb[same], ref),
+                       "fid_stats": fid(emb(train_stats[same]), ref_stats),
+                       **pair_scores(sub.actor, sub.reactor, kinds)}
             else:
                 runs = []
                 for r in range(repeats):
                     gen = generate(model, sub, row, seed + r, sampling)
-                    runs.append({"fid": fid(emb(window_stats(sub.actor, gen)), ref),
-                                 **pair_scores(sub.actor, gen)})
-                res = {k: float(np.mean([x[k] for x in runs])) for k in runs[0]}
+                    runs.append({"fid": fid(pair_embedding(ev, sub.actor, gen), ref),
+                                 "fid_stats": fid(emb(window_stats(sub.actor, gen)), ref_stats),
+                                 **pair_scores(sub.actor, gen, kinds)})
+                res = {k: float(np.mean([x[k] for x in runs])) for k in runs[0] if k != "per_kind"}
+                if kinds is not None:
+                    res["per_kind"] = {k: {c: float(np.mean([x["per_kind"][k][c] for x in runs]))
+                                           for c in ("iv_cm3", "if")} for k in runs[0]["per_kind"]}
                 res["fid_std"] = float(np.std([x["fid"] for x in runs]))
             out[row] = res
             if log:
@@ -160,7 +194,7 @@ def run_eval_react(rows=ROWS, repeats: int = 2, seed: int = 0, model: ReactionMo
 
 
 def format_table(report: dict) -> str:
-    cols = ("fid", "iv_cm3", "if", "contact_frames", "foot_skating", "bone_deviation")
+    cols = ("fid", "fid_stats", "iv_cm3", "if", "contact_frames", "foot_skating", "bone_deviation")
     lines = []
     for name, rows in report["sets"].items():
         tag = " (composed, synthetic)" if name == "synthetic" else " (captured salsa)"
@@ -171,4 +205,11 @@ def format_table(report: dict) -> str:
                 continue
             cells = "".join(f"{res[c]:>15.4f}" for c in cols)
             lines.append(f"  {row:<20}{cells}")
+        kinds = [k for k in rows.get("real", {}).get("per_kind", {})]
+        if kinds:
+            lines.append("  IF per kind: " + " ".join(f"{k:>18}" for k in kinds))
+            for row, res in rows.items():
+                if row != "windows" and "per_kind" in res:
+                    cells = " ".join(f"{res['per_kind'][k]['if']:>18.3f}" for k in kinds)
+                    lines.append(f"  {row:<13}{cells}")
     return "\n".join(lines)
