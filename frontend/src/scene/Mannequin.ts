@@ -1,10 +1,14 @@
-// A person drawn as capsules (one per bone) and spheres (one per joint), coloured by body
-// part. Per frame: contact joints glow green, bones of penetrating parts turn red.
+// A person drawn as a cylinder per bone and a sphere per joint (the joint spheres, at least as
+// wide as the bones meeting there, close the cylinders' ends: together they are capsules),
+// coloured by body part. Two instanced meshes per person, so two draw calls whatever the
+// skeleton: per instance a matrix, a colour and a glow. Per frame: contact joints glow green,
+// bones of penetrating parts turn red; the selected / hovered part is painted on top.
 import * as THREE from "three";
 import type { Skeleton } from "../api/types";
 import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
 import { blobMap } from "./blobShadow";
 import { QUALITY, type QualitySettings } from "./quality";
+import { Instances } from "./bodyInstances";
 
 // Capsule radius (m) of the bone ending at a joint, by joint name.
 const BONE_RADIUS: [RegExp, number][] = [
@@ -33,16 +37,6 @@ function boneRadius(name: string): number {
   return BONE_RADIUS.find(([re]) => re.test(name))?.[1] ?? 0.04;
 }
 
-function material(colour: string): THREE.MeshStandardMaterial {
-  return new THREE.MeshStandardMaterial({ color: colour, roughness: 0.55, metalness: 0.05 });
-}
-
-interface Part {
-  mesh: THREE.Mesh;
-  mat: THREE.MeshStandardMaterial;
-  colour: THREE.Color;
-}
-
 export const SELECT_COLOUR = "#ffd166";
 export const HOVER_COLOUR = "#fff3c4";
 
@@ -52,44 +46,41 @@ export class Mannequin {
   selected = new Set<number>();
   hovered = new Set<number>();
   private readonly bonePairs: [number, number][];
-  private readonly boneParts: Part[] = [];
-  private readonly lengths: number[] = [];
-  private readonly jointParts: Part[] = [];
+  private readonly boneRadii: number[];
+  private readonly jointRadii: number[];
+  private readonly bones: Instances;
+  private readonly joints: Instances;
   private readonly blobs: { joint: number; mesh: THREE.Mesh; mat: THREE.MeshBasicMaterial }[] = [];
   private readonly a = new THREE.Vector3();
   private readonly b = new THREE.Vector3();
+  private readonly q = new THREE.Quaternion();
+  private readonly s = new THREE.Vector3();
+  private readonly m = new THREE.Matrix4();
 
-  /** `rest`: the first frame (66 floats), whose bone lengths size the capsules. `quality`: tessellation,
-   * and shadows: cast them for the renderer's shadow map, or draw blob shadows on the floor. */
+  /** `quality`: tessellation, and shadows: cast them for the renderer's shadow map, or draw blob
+   * shadows on the floor. Bones take their length from each pose. */
   constructor(
     skeleton: Skeleton,
     readonly person: number,
-    rest: Float32Array,
-    private readonly quality: QualitySettings = QUALITY.full,
+    quality: QualitySettings = QUALITY.full,
   ) {
-    const shadowMap = quality.shadowMap;
     const colours = jointColours(skeleton, person);
     this.bonePairs = bones(skeleton);
-    for (const [child, parent] of this.bonePairs) {
-      const length = Math.max(1e-3, this.point(rest, child, this.a).distanceTo(this.point(rest, parent, this.b)));
-      const radius = boneRadius(skeleton.joints[child]);
-      const geometry = new THREE.CapsuleGeometry(radius, length, ...quality.capsule);
-      const part = this.add(geometry, colours[child]);
-      part.mesh.userData = { person, joint: child };
-      this.boneParts.push(part);
-      this.lengths.push(length);
-    }
-    skeleton.joints.forEach((name, j) => {
-      const adjacent = this.bonePairs
-        .filter(([c, p]) => c === j || p === j)
-        .map(([c]) => boneRadius(skeleton.joints[c]));
-      const r = name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
-      const light = new THREE.Color(colours[j]).lerp(new THREE.Color("#ffffff"), 0.18);
-      const part = this.add(new THREE.SphereGeometry(r, ...quality.sphere), "#" + light.getHexString());
-      part.mesh.userData = { person, joint: j };
-      this.jointParts.push(part);
+    this.boneRadii = this.bonePairs.map(([child]) => boneRadius(skeleton.joints[child]));
+    this.jointRadii = skeleton.joints.map((name, j) => {
+      const adjacent = this.bonePairs.filter(([c, p]) => c === j || p === j).map(([c]) => boneRadius(skeleton.joints[c]));
+      return name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
     });
-    if (!shadowMap) {
+    // unit shapes, scaled per instance: a cylinder of radius 1 and length 1 along y (open: the
+    // joint spheres cover its ends), a sphere of radius 1
+    const cylinder = new THREE.CylinderGeometry(1, 1, 1, quality.capsule[1], 1, true);
+    this.bones = new Instances(cylinder, this.bonePairs.map(([child]) => colours[child]), quality,
+      { person, joints: this.bonePairs.map(([child]) => child) });
+    const lighter = colours.map((c) => "#" + new THREE.Color(c).lerp(new THREE.Color("#ffffff"), 0.18).getHexString());
+    const sphere = new THREE.SphereGeometry(1, ...quality.sphere);
+    this.joints = new Instances(sphere, lighter, quality, { person, joints: skeleton.joints.map((_, j) => j) });
+    this.group.add(this.bones.mesh, this.joints.mesh);
+    if (!quality.shadowMap) {
       for (const [name, size] of BLOBS) {
         const mat = new THREE.MeshBasicMaterial({ map: blobMap(), transparent: true, depthWrite: false, opacity: 0.5 });
         const mesh = new THREE.Mesh(new THREE.PlaneGeometry(size, size), mat);
@@ -101,37 +92,35 @@ export class Mannequin {
     }
   }
 
-  private add(geometry: THREE.BufferGeometry, colour: string): Part {
-    const mat = material(colour);
-    const mesh = new THREE.Mesh(geometry, mat);
-    mesh.castShadow = this.quality.shadowMap;
-    this.group.add(mesh);
-    return { mesh, mat, colour: new THREE.Color(colour) };
-  }
-
   private point(f: Float32Array, j: number, out: THREE.Vector3): THREE.Vector3 {
     return out.set(f[3 * j], f[3 * j + 1], f[3 * j + 2]);
   }
 
-  /** Pose the mannequin: `joints` is one frame (66 floats); sets highlight colours. */
+  /** Pose the mannequin: `joints` is one frame (66 floats); sets highlight colours. No allocation. */
   setPose(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
-    this.bonePairs.forEach(([child, parent], i) => {
-      const { mesh } = this.boneParts[i];
-      this.point(joints, parent, this.a);
-      this.point(joints, child, this.b);
-      mesh.position.addVectors(this.a, this.b).multiplyScalar(0.5);
-      const dir = this.b.sub(this.a);
-      const len = dir.length();
-      if (len > 1e-6) mesh.quaternion.setFromUnitVectors(UP, dir.divideScalar(len));
-      mesh.scale.set(1, len / this.lengths[i], 1);
-      this.paint(this.boneParts[i], penetrating.has(child) ? PENETRATION_COLOUR : this.pickColour(child), 0.45);
-    });
-    this.jointParts.forEach((part, j) => {
-      this.point(joints, j, part.mesh.position);
+    const { a, b, q, s, m } = this;
+    for (let i = 0; i < this.bonePairs.length; i++) {
+      const [child, parent] = this.bonePairs[i];
+      this.point(joints, parent, a);
+      this.point(joints, child, b);
+      b.sub(a); // the bone's direction × length
+      const len = b.length();
+      if (len > 1e-6) q.setFromUnitVectors(UP, b.divideScalar(len));
+      a.addScaledVector(b, len / 2); // the bone's middle
+      const r = this.boneRadii[i];
+      s.set(r, Math.max(len, 1e-4), r);
+      this.bones.mesh.setMatrixAt(i, m.compose(a, q, s));
+      this.bones.paint(i, penetrating.has(child) ? PENETRATION_COLOUR : this.pickColour(child), 0.45);
+    }
+    q.identity();
+    for (let j = 0; j < this.jointRadii.length; j++) {
       const contact = contacts.has(j);
-      part.mesh.scale.setScalar(contact ? 1.3 : 1);
-      this.paint(part, contact ? CONTACT_COLOUR : this.pickColour(j), 0.7);
-    });
+      s.setScalar(this.jointRadii[j] * (contact ? 1.3 : 1));
+      this.joints.mesh.setMatrixAt(j, m.compose(this.point(joints, j, a), q, s));
+      this.joints.paint(j, contact ? CONTACT_COLOUR : this.pickColour(j), 0.7);
+    }
+    this.bones.posed();
+    this.joints.posed();
     for (const { joint, mesh, mat } of this.blobs) {
       const y = joints[3 * joint + 1];
       mesh.position.set(joints[3 * joint], 0.003, joints[3 * joint + 2]);
@@ -142,31 +131,22 @@ export class Mannequin {
     }
   }
 
-  /** Meshes a pointer ray can hit (bones and joints; userData {person, joint}). */
+  /** Meshes a pointer ray can hit: the two instanced meshes; userData {person, joints}, where
+   * joints[instanceId] is the joint (a bone: its child joint) the hit instance stands for. */
   get pickable(): THREE.Object3D[] {
-    return [...this.boneParts, ...this.jointParts].map((p) => p.mesh);
+    return [this.bones.mesh, this.joints.mesh];
   }
 
   private pickColour(j: number): string | null {
     return this.selected.has(j) ? SELECT_COLOUR : this.hovered.has(j) ? HOVER_COLOUR : null;
   }
 
-  private paint(part: Part, highlight: string | null, glow: number): void {
-    if (highlight) {
-      part.mat.color.set(highlight);
-      part.mat.emissive.set(highlight);
-      part.mat.emissiveIntensity = glow;
-    } else {
-      part.mat.color.copy(part.colour);
-      part.mat.emissive.set(0x000000);
-      part.mat.emissiveIntensity = 0;
-    }
-  }
-
   dispose(): void {
-    for (const p of [...this.boneParts, ...this.jointParts, ...this.blobs]) {
-      p.mesh.geometry.dispose();
-      p.mat.dispose();
+    this.bones.dispose();
+    this.joints.dispose();
+    for (const { mesh, mat } of this.blobs) {
+      mesh.geometry.dispose();
+      mat.dispose();
     }
     this.group.removeFromParent();
   }

@@ -34,11 +34,11 @@ export class Picker {
 
   /** The nearest mannequin joint (or bone, by its child joint) under the pointer. */
   joint(clientX: number, clientY: number, meshes: THREE.Object3D[]): JointHit | null {
+    // instanced meshes (Mannequin.pickable): userData.joints[instanceId] is the joint
     const hit = this.aim(clientX, clientY).intersectObjects(meshes, false)[0];
-    const data = hit?.object.userData as Partial<JointHit> | undefined;
-    return data && typeof data.person === "number" && typeof data.joint === "number"
-      ? { person: data.person, joint: data.joint }
-      : null;
+    const data = hit?.object.userData as { person?: number; joints?: number[] } | undefined;
+    const joint = hit?.instanceId !== undefined ? data?.joints?.[hit.instanceId] : undefined;
+    return typeof data?.person === "number" && typeof joint === "number" ? { person: data.person, joint } : null;
   }
 
   /** Index of the path handle under the pointer, or null. */

@@ -6,9 +6,11 @@ import type { Skeleton } from "../api/types";
 import type { FrameBuffer } from "../playback/frameBuffer";
 import { contactJoints, penetratingBones } from "./colours";
 import { Ground } from "./Ground";
+import { LineGround } from "./LineGround";
 import { Mannequin } from "./Mannequin";
 import { PathOverlay } from "./PathOverlay";
 import { QUALITY, type Quality, type QualitySettings } from "./quality";
+import { debugFlags } from "./debugFlags";
 
 const BACKGROUND = "#14161b";
 
@@ -18,10 +20,11 @@ export class Stage {
   readonly camera = new THREE.PerspectiveCamera(40, 1, 0.05, 200);
   readonly controls: OrbitControls;
   private readonly sun = new THREE.DirectionalLight("#ffffff", 2.2);
-  private readonly ground: Ground;
+  private readonly ground: Ground | LineGround;
   private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
   private dirty = true;
+  private readonly debug = debugFlags();
   readonly path = new PathOverlay();
 
   constructor(
@@ -31,12 +34,12 @@ export class Stage {
     const settings = QUALITY[quality];
     this.settings = settings;
     this.renderer = new THREE.WebGLRenderer({ canvas, antialias: settings.antialias });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, settings.maxPixelRatio));
+    this.renderer.setPixelRatio(this.debug.pixelRatio ?? Math.min(window.devicePixelRatio, settings.maxPixelRatio));
     this.renderer.shadowMap.enabled = settings.shadowMap;
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
     this.renderer.toneMapping = THREE.ACESFilmicToneMapping;
     this.scene.background = new THREE.Color(BACKGROUND);
-    this.ground = new Ground(BACKGROUND, settings.shadowMap);
+    this.ground = settings.gridLines ? new LineGround(BACKGROUND) : new Ground(BACKGROUND, settings.shadowMap);
 
     this.scene.add(new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4));
     this.sun.position.set(3, 7, 5);
@@ -51,6 +54,8 @@ export class Stage {
     this.scene.add(fill);
 
     this.scene.add(this.ground.group, this.path.group);
+    this.ground.group.visible = !this.debug.hide.has("ground");
+    this.path.group.visible = !this.debug.hide.has("path");
 
     this.camera.position.set(2.4, 1.8, 5.2);
     this.controls = new OrbitControls(this.camera, canvas);
@@ -71,11 +76,14 @@ export class Stage {
     this.dirty = true;
   }
 
-  /** Replace the mannequins with one per person of `buffer` (sized by its first frame). */
+  /** Replace the mannequins with one per person of `buffer`. */
   setPeople(skeleton: Skeleton, buffer: FrameBuffer): void {
     this.clearPeople();
     for (let p = 0; p < buffer.persons; p++) {
-      const m = new Mannequin(skeleton, p, buffer.frame(p, 0), this.settings);
+      const m = new Mannequin(skeleton, p, this.settings);
+      m.group.visible = !this.debug.hide.has("people");
+      // blob shadows: the mannequin's meshes that are not its two instanced ones
+      for (const c of m.group.children) if (!(c instanceof THREE.InstancedMesh)) c.visible = !this.debug.hide.has("blobs");
       this.mannequins.push(m);
       this.scene.add(m.group);
     }

@@ -11,11 +11,13 @@ export interface QualitySettings {
   /** Tessellation: capsule [cap segments, radial segments], sphere [width, height segments]. */
   capsule: [number, number];
   sphere: [number, number];
+  /** The floor grid as line segments (LineGround) rather than a per-pixel shader (Ground). */
+  gridLines: boolean;
 }
 
 export const QUALITY: Record<Quality, QualitySettings> = {
-  full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12] },
-  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [10, 7] },
+  full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12], gridLines: false },
+  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [10, 7], gridLines: true },
 };
 
 const SOFTWARE = /swiftshader|llvmpipe|softpipe|software|basic render/i;

@@ -1,0 +1,69 @@
+import * as THREE from "three";
+import { describe, expect, it } from "vitest";
+import type { Skeleton } from "../api/types";
+import skeletonJson from "../test/skeleton.json";
+import { debugFlags } from "./debugFlags";
+import { HOVER_COLOUR, Mannequin } from "./Mannequin";
+import { QUALITY } from "./quality";
+
+const skeleton = skeletonJson as unknown as Skeleton;
+const rest = new Float32Array(skeleton.rest!.flat());
+const LEFT_ELBOW = skeleton.joints.indexOf("left_elbow");
+const LEFT_WRIST = skeleton.joints.indexOf("left_wrist");
+
+/** The joint a ray from in front (+z, looking down -z) through (x, y) picks, or null. */
+function pickAt(m: Mannequin, x: number, y: number): number | null {
+  m.group.updateMatrixWorld(true);
+  const ray = new THREE.Raycaster(new THREE.Vector3(x, y, 5), new THREE.Vector3(0, 0, -1));
+  const hit = ray.intersectObjects(m.pickable, false)[0];
+  return hit?.instanceId === undefined ? null : (hit.object.userData.joints as number[])[hit.instanceId];
+}
+
+describe("Mannequin (instanced)", () => {
+  it("draws a person with two meshes and picks the joint under a ray through the instances", () => {
+    const m = new Mannequin(skeleton, 0, QUALITY.full);
+    m.setPose(rest, new Set(), new Set());
+    expect(m.pickable).toHaveLength(2);
+    const [x, y] = [rest[3 * LEFT_ELBOW], rest[3 * LEFT_ELBOW + 1]];
+    expect(pickAt(m, x, y)).toBe(LEFT_ELBOW);
+    // the forearm between elbow and wrist is the bone ending at the wrist
+    const mid = [0, 1].map((k) => (rest[3 * LEFT_ELBOW + k] + rest[3 * LEFT_WRIST + k]) / 2);
+    expect(pickAt(m, mid[0], mid[1])).toBe(LEFT_WRIST);
+    // after a new pose the bounds follow: the same joint 3 m to the side is picked there
+    const moved = rest.map((v, i) => (i % 3 === 0 ? v + 3 : v));
+    m.setPose(moved, new Set(), new Set());
+    expect(pickAt(m, x + 3, y)).toBe(LEFT_ELBOW);
+    expect(pickAt(m, x, y)).toBeNull();
+    m.dispose();
+  });
+
+  it("paints hovered joints, contact joints and penetrating bones per instance", () => {
+    const m = new Mannequin(skeleton, 1, QUALITY.full);
+    m.hovered = new Set([LEFT_ELBOW]);
+    m.setPose(rest, new Set([LEFT_WRIST]), new Set());
+    const [, spheres] = m.pickable as THREE.InstancedMesh[];
+    const colour = (i: number) => {
+      const c = new THREE.Color();
+      spheres.getColorAt(i, c);
+      return "#" + c.getHexString();
+    };
+    expect(colour(LEFT_ELBOW)).toBe(HOVER_COLOUR);
+    expect(colour(LEFT_WRIST)).toBe("#39ff88");
+    const glow = spheres.geometry.getAttribute("glow");
+    expect(glow.getX(LEFT_WRIST)).toBeGreaterThan(0);
+    expect(glow.getX(0)).toBe(0);
+    m.hovered = new Set();
+    m.setPose(rest, new Set(), new Set());
+    expect(colour(LEFT_ELBOW)).not.toBe(HOVER_COLOUR);
+    expect(glow.getX(LEFT_WRIST)).toBe(0);
+    m.dispose();
+  });
+});
+
+describe("debug flags", () => {
+  it("reads ?hide= and ?pixelRatio=, ignoring bad values", () => {
+    expect(debugFlags("?hide=ground,people&pixelRatio=0.5")).toEqual({ hide: new Set(["ground", "people"]), pixelRatio: 0.5 });
+    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null });
+    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null });
+  });
+});
