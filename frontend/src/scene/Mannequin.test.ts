@@ -7,7 +7,7 @@ import { HOVER_COLOUR, Mannequin } from "./Mannequin";
 import { QUALITY } from "./quality";
 
 const skeleton = skeletonJson as unknown as Skeleton;
-const rest = new Float32Array(skeleton.rest!.flat());
+const rest = new Float32Array(skeletonJson.rest.flat());
 const LEFT_ELBOW = skeleton.joints.indexOf("left_elbow");
 const LEFT_WRIST = skeleton.joints.indexOf("left_wrist");
 
