@@ -1,5 +1,6 @@
 """`make train`: retrain every single-person model from the processed data (SPAM, its
-ablations, the text–motion evaluator when present), export ONNX and write the model card.
+ablations, the text–motion evaluator when present), the pair evaluator and ARFlow, export ONNX
+and write the model cards.
 
   python -m models.train_all [--scale 0.5]
 """
@@ -12,6 +13,11 @@ from models.spam.train import main as spam_main
 
 def main(argv: list[str] | None = None) -> None:
     spam_main(["--all", *(argv or [])])
+    # the text ↔ pair evaluator behind eval-react's FID (≤ 5 min), then its export and card
+    from models.pair_evaluator.export import main as pair_export
+    from models.pair_evaluator.train import main as pair_train
+    pair_train([])
+    pair_export([])
     from models.arflow.train import main as arflow_main   # two-person reactions (≤ 15 min)
     arflow_main([])
 

@@ -144,24 +144,32 @@ def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
                      "clips": sum(c.split == "train" and not c.synthetic for c in clips)}}
 
 
-def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--out", default=str(DEFAULT_OUT), help="checkpoint directory")
+def run_cli(argv: list[str] | None, description: str, configs: tuple, train_fn, default_out: Path,
+            filename: str) -> int:
+    """The train command of an evaluator (this one and the pair evaluator): configs is
+    (full, tiny) config; flags --out, --data-dir, --steps, --seconds, --seed, --tiny."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--out", default=str(default_out), help="checkpoint directory")
     ap.add_argument("--data-dir", default=str(DATA_DIR))
     ap.add_argument("--steps", type=int)
     ap.add_argument("--seconds", type=float, help="wall-clock budget")
     ap.add_argument("--seed", type=int)
     ap.add_argument("--tiny", action="store_true", help="a tiny model (smoke runs)")
     args = ap.parse_args(argv)
-    cfg = EvaluatorConfig(**TINY) if args.tiny else EvaluatorConfig()
+    cfg = configs[1] if args.tiny else configs[0]
     cfg = replace(cfg, **{k: v for k, v in (("steps", args.steps), ("seconds", args.seconds),
                                              ("seed", args.seed)) if v is not None})
-    ckpt = train(cfg, default_clips(args.data_dir))
+    ckpt = train_fn(cfg, default_clips(args.data_dir))
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    torch.save(ckpt, out / "evaluator.pt")
-    print(f"wrote {out / 'evaluator.pt'}: {ckpt['steps']} steps in {ckpt['train_seconds']} s")
+    torch.save(ckpt, out / filename)
+    print(f"wrote {out / filename}: {ckpt['steps']} steps in {ckpt['train_seconds']} s")
     return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    return run_cli(argv, __doc__.split("\n")[0], (EvaluatorConfig(), EvaluatorConfig(**TINY)),
+                   train, DEFAULT_OUT, "evaluator.pt")
 
 
 if __name__ == "__main__":

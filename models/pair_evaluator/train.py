@@ -14,19 +14,17 @@ copy against its own kind's texts). Then `python -m models.pair_evaluator.export
 
 from __future__ import annotations
 
-import argparse
 import time
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import torch
 import torch.nn.functional as F
 
-from interplay.motion.clip import DATA_DIR, default_clips
+from interplay.motion.clip import default_clips
 from interplay.text.encoder import get_encoder
 from models.evaluator.model import Evaluator
-from models.evaluator.train import lr_at
+from models.evaluator.train import lr_at, run_cli
 
 from .config import PairEvaluatorConfig
 from .data import PairSet, broken_batch, build_set, displaced, raw_features
@@ -154,23 +152,9 @@ def train(cfg: PairEvaluatorConfig, clips=None, log=print) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--out", default=str(DEFAULT_OUT), help="checkpoint directory")
-    ap.add_argument("--data-dir", default=str(DATA_DIR))
-    ap.add_argument("--steps", type=int)
-    ap.add_argument("--seconds", type=float, help="wall-clock budget")
-    ap.add_argument("--seed", type=int)
-    ap.add_argument("--tiny", action="store_true", help="a tiny model (smoke runs)")
-    args = ap.parse_args(argv)
-    cfg = PairEvaluatorConfig(**TINY) if args.tiny else PairEvaluatorConfig()
-    cfg = replace(cfg, **{k: v for k, v in (("steps", args.steps), ("seconds", args.seconds),
-                                             ("seed", args.seed)) if v is not None})
-    ckpt = train(cfg, default_clips(args.data_dir))
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    torch.save(ckpt, out / "pair_evaluator.pt")
-    print(f"wrote {out / 'pair_evaluator.pt'}: {ckpt['steps']} steps in {ckpt['train_seconds']} s")
-    return 0
+    return run_cli(argv, __doc__.split("\n")[0],
+                   (PairEvaluatorConfig(), PairEvaluatorConfig(**TINY)), train, DEFAULT_OUT,
+                   "pair_evaluator.pt")
 
 
 if __name__ == "__main__":

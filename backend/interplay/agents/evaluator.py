@@ -40,6 +40,27 @@ def chunks(frames: int, max_frames: int) -> list[tuple[int, int]]:
     return [(int(a), int(b)) for a, b in zip(bounds[:-1], bounds[1:])]
 
 
+def open_weights(d: Path, what: str, package: str, threads: int = 1) -> tuple:
+    """(onnxruntime session of motion_encoder.onnx, text_proj arrays, config.json) of an
+    evaluator's weights directory (shared with the pair evaluator); FileNotFoundError naming
+    the missing files and how to make them."""
+    import onnxruntime as ort
+
+    missing = [f for f in FILES if not (d / f).is_file()]
+    if missing:
+        raise FileNotFoundError(f"{d}: {what} files missing: {', '.join(missing)} "
+                                f"(train and export it: python -m {package}.train, "
+                                f"then python -m {package}.export)")
+    opts = ort.SessionOptions()
+    opts.intra_op_num_threads = threads
+    opts.inter_op_num_threads = 1
+    session = ort.InferenceSession(str(d / "motion_encoder.onnx"), sess_options=opts,
+                                   providers=["CPUExecutionProvider"])
+    with np.load(d / "text_proj.npz") as z:
+        proj = {k: z[k] for k in z.files}
+    return session, proj, json.loads((d / "config.json").read_text())
+
+
 def _gelu(x: np.ndarray) -> np.ndarray:
     """torch's GELU(approximate="tanh")."""
     return 0.5 * x * (1.0 + np.tanh(math.sqrt(2.0 / math.pi) * (x + 0.044715 * x ** 3)))
@@ -63,23 +84,9 @@ class Evaluator:
 
     @classmethod
     def load(cls, directory: str | Path = DEFAULT_DIR, threads: int = 1) -> "Evaluator":
-        import onnxruntime as ort
-
         d = Path(directory)
-        missing = [f for f in FILES if not (d / f).is_file()]
-        if missing:
-            raise FileNotFoundError(f"{d}: evaluator files missing: {', '.join(missing)} "
-                                    f"(train and export it: python -m models.evaluator.train, "
-                                    f"then python -m models.evaluator.export)")
-        opts = ort.SessionOptions()
-        opts.intra_op_num_threads = threads
-        opts.inter_op_num_threads = 1
-        session = ort.InferenceSession(str(d / "motion_encoder.onnx"), sess_options=opts,
-                                       providers=["CPUExecutionProvider"])
-        with np.load(d / "text_proj.npz") as z:
-            proj = {k: z[k] for k in z.files}
-        return cls(session, proj, Normalizer.load(d / "normalizer.npz"),
-                   json.loads((d / "config.json").read_text()))
+        session, proj, config = open_weights(d, "evaluator", "models.evaluator", threads)
+        return cls(session, proj, Normalizer.load(d / "normalizer.npz"), config)
 
     # -- motion ------------------------------------------------------------------------------
     def embed_features(self, features: list[np.ndarray]) -> np.ndarray:

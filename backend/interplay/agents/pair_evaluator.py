@@ -24,7 +24,6 @@ averaged and renormalised.
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import numpy as np
@@ -33,10 +32,9 @@ from ..motion import skeleton as sk
 from ..motion.kinematics import floor_height
 from ..motion.pairs import canonical_window, distance_map, relative_root
 from ..eval.metrics import fid  # noqa: F401  (re-exported: FID of two embedding sets (N, E))
-from .evaluator import Evaluator, _unit, chunks
+from .evaluator import Evaluator, _unit, chunks, open_weights
 
 DEFAULT_DIR = Path(__file__).resolve().parents[3] / "models" / "weights" / "pair_evaluator"
-FILES = ("motion_encoder.onnx", "text_proj.npz", "normalizer.npz", "config.json")
 PAIR_FEATURE_DIM = 4 * sk.NUM_JOINTS * 3 + 4 + len(sk.KEY_JOINTS) ** 2      # 293
 BATCH = 64
 
@@ -78,24 +76,11 @@ class PairEvaluator(Evaluator):
 
     @classmethod
     def load(cls, directory: str | Path | None = None, threads: int = 1) -> "PairEvaluator":
-        import onnxruntime as ort
-
         d = Path(directory or DEFAULT_DIR)
-        missing = [f for f in FILES if not (d / f).is_file()]
-        if missing:
-            raise FileNotFoundError(f"{d}: pair evaluator files missing: {', '.join(missing)} "
-                                    f"(python -m models.pair_evaluator.train, then "
-                                    f"python -m models.pair_evaluator.export)")
-        opts = ort.SessionOptions()
-        opts.intra_op_num_threads = threads
-        opts.inter_op_num_threads = 1
-        session = ort.InferenceSession(str(d / "motion_encoder.onnx"), sess_options=opts,
-                                       providers=["CPUExecutionProvider"])
-        with np.load(d / "text_proj.npz") as z:
-            proj = {k: z[k] for k in z.files}
+        session, proj, config = open_weights(d, "pair evaluator", "models.pair_evaluator", threads)
         with np.load(d / "normalizer.npz") as z:
             norm = {"mean": z["mean"], "std": z["std"]}
-        return cls(session, proj, norm, json.loads((d / "config.json").read_text()))
+        return cls(session, proj, norm, config)
 
     def embed_pair_features(self, features: np.ndarray) -> np.ndarray:
         """Unit embeddings (N, E) of raw pair features (N, T, 293), T ≤ max_frames, all real
