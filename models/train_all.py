@@ -1,5 +1,6 @@
 """`make train`: retrain every single-person model from the processed data (SPAM, its
-ablations, the text–motion evaluator when present), the pair evaluator and ARFlow, export ONNX
+ablations, the text–motion evaluator when present), the pair evaluator, ARFlow and CODA (two-person
+generation, models/coda, ≤ 25 min), export ONNX
 and write the model cards.
 
   python -m models.train_all [--scale 0.5]
@@ -20,6 +21,8 @@ def main(argv: list[str] | None = None) -> None:
     pair_export([])
     from models.arflow.train import main as arflow_main   # two-person reactions (≤ 15 min)
     arflow_main([])
+    from models.coda.train import main as coda_main       # two-person generation (≤ 25 min)
+    coda_main(["--all", *(argv or [])])
 
 
 if __name__ == "__main__":

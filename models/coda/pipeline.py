@@ -40,12 +40,12 @@ CACHE = ROOT / "models" / "cache" / "coda"
 
 @dataclass(frozen=True)
 class Budgets:
-    vq: float = 420.0              # seconds
-    cmt: float = 270.0
-    ablation_vq_steps: int = 150   # each ablation CVQ-VAE (steps, capped by ablation_vq_cap s)
-    ablation_vq_cap: float = 100.0
+    vq: float = 400.0              # seconds
+    cmt: float = 240.0
+    ablation_vq_steps: int = 130   # each ablation CVQ-VAE (steps, capped by ablation_vq_cap s)
+    ablation_vq_cap: float = 130.0
     ablation_cmt: float = 60.0
-    search: float = 120.0          # sampling-default search on val
+    search: float = 100.0          # sampling-default search on val
 
 
 CVQ = CVQConfig()
