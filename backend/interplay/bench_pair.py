@@ -31,7 +31,7 @@ def run_pair_bench(weights_dir: str | Path | None = None, runs: int = 10, warmup
     report = {"weights": str(weights_dir), "trained": placeholder_reason(weights_dir) is None,
               "load_s": round(time.perf_counter() - t0, 3), "cpus": os.cpu_count(), "threads": 2,
               "load_avg_1m": round(os.getloadavg()[0], 2), "codes": c.codes,
-              "steps": c.steps, "cfg": c.cfg, "max_tokens": c.max_tokens, "generate": [],
+              "steps": c.steps, "cfg": c.cfg, "window_tokens": c.window_tokens, "generate": [],
               "target_ms": TARGET_MS}
     for s in seconds:
         frames = round(s * 20)
@@ -47,7 +47,7 @@ def format_pair_table(report: dict) -> str:
     state = "trained" if report["trained"] else "UNTRAINED placeholder"
     lines = [f"CODA (two people) on onnxruntime ({report['cpus']} CPUs, {report['threads']} "
              f"threads, {state} weights, K={report['codes']}, {report['steps']} steps, cfg "
-             f"{report['cfg']:g}, window {report['max_tokens']} tokens, sessions "
+             f"{report['cfg']:g}, window {report['window_tokens']} tokens, sessions "
              f"{report['load_s']:.2f} s; load average {report['load_avg_1m']:g} → "
              f"{report['load_avg_1m_after']:g})",
              f"{'task':<16}  {'frames':>6}  {'runs':>4}  {'p50':>8}  {'p95':>8}  {'frames/s':>8}"

@@ -34,19 +34,20 @@ def test_generate_is_seeded_with_fixed_bones_on_the_floor(rt):
 
 def test_a_test_windows_own_tokens_decode_close_to_it(rt):
     test = pair_set("test")
-    errors = []
-    for kind in (False, True):                     # one captured, one composed window
-        w = test.windows[np.flatnonzero(test.synthetic == kind)[0]]   # (2, 80, 22, 3) canonical
+    for kind in (False, True):                     # captured salsa, composed
+        idx = np.flatnonzero(test.synthetic == kind)
+        w, other = test.windows[idx[0]], test.windows[idx[-1]]     # (2, 80, 22, 3) canonical
         rec = rt.decode(rt.encode(w))
-        errors.append(float(np.linalg.norm(rec - w, axis=-1).mean()))
-    # a VQ-VAE reconstruction of held-out motion: centimetres, not the metres between
-    # unrelated poses (two different test windows are ~0.3 m apart on the same measure)
-    assert max(errors) < 0.12, errors
+        own = float(np.linalg.norm(rec - w, axis=-1).mean())
+        apart = float(np.linalg.norm(rec - other, axis=-1).mean())
+        # the VQ-VAE's reconstruction of held-out motion: much closer to its own window than
+        # to another test window of the same kind, and within the model card's error scale
+        assert own < 0.5 * apart and own < 0.25, (kind, own, apart)
 
 
-def test_windows_beyond_the_model_range_continue(rt):
-    frames = rt.config.max_frames + 40
-    out = rt.generate("two people walk side by side", frames / 20, seed=1)
+def test_windows_beyond_the_trained_length_continue(rt):
+    frames = 3 * rt.config.max_frames                  # three windows and more
+    out = rt.generate("two people shake hands", frames / 20, seed=1)
     assert out.shape == (2, frames, 22, 3) and np.all(np.isfinite(out))
-    step = np.linalg.norm(np.diff(out[:, :, 0], axis=1), axis=-1)    # pelvis m/frame
-    assert step.max() < 0.5                       # no teleport at the window seams
+    step = np.linalg.norm(np.diff(out[:, :-4, 0], axis=1), axis=-1)   # pelvis m per frame
+    assert step.max() < 0.25                       # ≤ 5 m/s: no jump at the window seams

@@ -15,8 +15,9 @@ text) with the unconditional one (zero text). `decode` turns both token rows int
 joints with the interaction codebook's residual added inside the graph.
 
 Windows and frames: the model sees the pair in its canonical frame (the first person's pelvis
-at the XZ origin facing +Z on the window's first frame). Motions longer than `max_tokens`, and
-every plan segment after the first, are generated window by window: the last `CONTEXT` tokens'
+at the XZ origin facing +Z on the window's first frame). Motions longer than one window, and
+every plan segment after the first, are generated window by window (`window_tokens`, the
+length the transformer was trained at): the last `CONTEXT` tokens'
 frames of what is already made are moved into their own canonical frame and re-encoded
 (`encode`), kept fixed as context, and the rest of the window is decoded after them, so each
 window continues the motion (and a new segment its predecessor's tail) under its own text.
@@ -157,20 +158,22 @@ class CodaRuntime:
         for text, frames in segments:
             emb, left = self.text_embedding(text), int(frames)
             while left > 0:
-                ctx = min(CONTEXT, hist.shape[1] // ds, c.max_tokens // 2)
+                ctx = min(CONTEXT, hist.shape[1] // ds, c.window_tokens // 2)
                 if ctx:
                     past = hist[:, hist.shape[1] - ctx * ds:]
                     rot, shift = canonical_transform(past[0, 0])
                     ctx_codes = self.encode(past @ rot.T + shift)
                 else:
                     rot, shift, ctx_codes = np.eye(3), np.zeros(3), np.zeros((2, 0), np.int64)
-                new = min(-(-left // ds), c.max_tokens - ctx)
+                new = min(-(-left // ds), c.window_tokens - ctx)
                 codes = np.concatenate([ctx_codes, np.zeros((2, new), np.int64)], axis=1)
                 editable = np.zeros(codes.shape, bool)
                 editable[:, ctx:] = True
                 codes = self.fill(codes, editable, emb, rng, **sampling)
                 world = (self.decode(codes) - shift) @ rot          # rot is orthonormal
-                keep = min(left, new * ds)
+                # A window with more of its segment to come drops its last token's frames
+                # (the decoder's edge), which the next window re-makes with context.
+                keep = min(left, new * ds) if new * ds >= left else (new - 1) * ds
                 out = world[:, ctx * ds:ctx * ds + keep]
                 if ctx:
                     fade = np.clip(1.0 - np.arange(1, keep + 1) / (SEAM + 1), 0.0, None)

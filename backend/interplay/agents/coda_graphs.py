@@ -48,12 +48,17 @@ class CodaConfig:
     cfg: float = 3.0                 # classifier-free guidance scale
     temperature: float = 1.0
     topk: float = 0.9                # < 1: MoMask's filter ratio; ≥ 1: a number of codes kept
+    # Tokens per generated window: the length the transformer was trained at (80-frame pair
+    # windows = 20 tokens in models/coda), although its relative-time bias runs up to
+    # max_tokens. config.json "window_tokens" overrides.
+    window_tokens: int = 20
 
     def __post_init__(self):
         if self.mask_id == -1:
             object.__setattr__(self, "mask_id", self.codes)
         if self.codes < 2 or self.max_tokens < 2 or self.downsample < 1 or self.steps < 1:
             raise ValueError(f"implausible CODA config: {self}")
+        object.__setattr__(self, "window_tokens", max(2, min(self.window_tokens, self.max_tokens)))
         if self.dim != sk.NUM_JOINTS * 3:
             raise ValueError(f"CODA weights are for {self.dim}-d frames; this code uses 66")
         if self.fps != sk.FPS:
@@ -68,7 +73,8 @@ class CodaConfig:
 
     @property
     def max_frames(self) -> int:
-        return self.max_tokens * self.downsample
+        """Frames of one generated window."""
+        return self.window_tokens * self.downsample
 
     @classmethod
     def from_json(cls, d: dict) -> "CodaConfig":
