@@ -46,6 +46,25 @@ def radii(joints: np.ndarray | None = None, scale: float | None = None) -> np.nd
     return SPHERE_RADII * float(scale)
 
 
+class ActorSpheres:
+    """What the loss needs of the actor, computed once per guided pose rather than per
+    gradient step: centres (T, S, 3), their transpose and squared norms, and the reach
+    δ + r_s + r_a (T, S, S) of every sphere pair."""
+
+    def __init__(self, centres: np.ndarray, reactor_radii: np.ndarray, actor_radii: np.ndarray,
+                 safe: float):
+        t = centres.shape[0]
+        if centres.shape != (t, NUM_SPHERES, 3):
+            raise ValueError(f"actor sphere centres must be (T, {NUM_SPHERES}, 3), "
+                             f"got {centres.shape}")
+        rr = np.broadcast_to(reactor_radii, (t, NUM_SPHERES))
+        ra = np.broadcast_to(actor_radii, (t, NUM_SPHERES))
+        self.centres = centres
+        self.centres_t = np.ascontiguousarray(centres.transpose(0, 2, 1))    # (T, 3, S)
+        self.norms = np.einsum("tak,tak->ta", centres, centres)[:, None, :]  # (T, 1, S)
+        self.reach = safe + rr[:, :, None] + ra[:, None, :]                  # (T, S, S)
+
+
 def penetration_loss(reactor: np.ndarray, actor_centres: np.ndarray, reactor_radii: np.ndarray,
                      actor_radii: np.ndarray, safe: float = 0.02) -> tuple[float, np.ndarray]:
     """Loss L and gradient ∂L/∂reactor (T, 22, 3) for reactor joints (T, 22, 3) against the
@@ -54,42 +73,48 @@ def penetration_loss(reactor: np.ndarray, actor_centres: np.ndarray, reactor_rad
     reactor = np.asarray(reactor, dtype=np.float64)
     if reactor.ndim != 3 or reactor.shape[1:] != (sk.NUM_JOINTS, 3):
         raise ValueError(f"reactor joints must be (T, 22, 3), got {reactor.shape}")
-    t = reactor.shape[0]
-    if actor_centres.shape != (t, NUM_SPHERES, 3):
-        raise ValueError(f"actor sphere centres must be ({t}, {NUM_SPHERES}, 3), "
+    if actor_centres.shape[0] != reactor.shape[0]:
+        raise ValueError(f"actor sphere centres must be ({reactor.shape[0]}, {NUM_SPHERES}, 3), "
                          f"got {actor_centres.shape}")
-    rr = np.broadcast_to(reactor_radii, (t, NUM_SPHERES))
-    ra = np.broadcast_to(actor_radii, (t, NUM_SPHERES))
+    return _loss(reactor, ActorSpheres(actor_centres, reactor_radii, actor_radii, safe))
+
+
+def _loss(reactor: np.ndarray, a: ActorSpheres) -> tuple[float, np.ndarray]:
     c = MIX @ reactor                                                    # (T, S, 3)
     # distances by |c|² + |a|² − 2 c·a (matmuls; no (T, S, S, 3) difference array)
-    d2 = (np.einsum("tsk,tsk->ts", c, c)[:, :, None]
-          + np.einsum("tak,tak->ta", actor_centres, actor_centres)[:, None, :]
-          - 2.0 * (c @ actor_centres.transpose(0, 2, 1)))                # (T, S, S)
-    dist = np.sqrt(np.maximum(d2, 0.0))
-    viol = np.maximum(safe + rr[:, :, None] + ra[:, None, :] - dist, 0.0)
-    loss = float(np.sum(viol * viol))
+    d2 = np.einsum("tsk,tsk->ts", c, c)[:, :, None] + a.norms - 2.0 * (c @ a.centres_t)
+    dist = np.sqrt(np.maximum(d2, 0.0, out=d2), out=d2)                  # (T, S, S)
+    viol = np.maximum(a.reach - dist, 0.0)
+    flat = viol.ravel()
+    loss = float(flat @ flat)
     if loss == 0.0:
         return loss, np.zeros_like(reactor)
     # dL/dc_s = Σ_a w_sa (c_s − c_a) with w = −2 viol / |c_s − c_a|
-    w = -2.0 * viol / np.maximum(dist, 1e-6)                             # (T, S, S)
-    grad_c = c * w.sum(axis=2)[..., None] - w @ actor_centres           # (T, S, 3)
-    # a coincident pair (dist ~0: no direction; the formula's rounding is ~1e-8 m) gets a
-    # push along +Z
-    grad_c[..., 2] += (-2.0 * viol * (dist <= 1e-6)).sum(axis=2)
+    near = dist.min() <= 1e-6            # a coincident pair has no direction (rounding ~1e-8 m)
+    w = viol / np.maximum(dist, 1e-6)
+    w *= -2.0                                                            # (T, S, S)
+    grad_c = c * w.sum(axis=2)[..., None] - w @ a.centres                # (T, S, 3)
+    if near:                                                             # push it along +Z
+        grad_c[..., 2] += (-2.0 * viol * (dist <= 1e-6)).sum(axis=2)
     return loss, MIX.T @ grad_c
 
 
 def guide(reactor: np.ndarray, actor_centres: np.ndarray, reactor_radii: np.ndarray,
           actor_radii: np.ndarray, strength: float, safe: float = 0.02, iters: int = 1,
-          rigid: float = 0.0) -> np.ndarray:
+          rigid: float = 0.0, spheres: ActorSpheres | None = None) -> np.ndarray:
     """The predicted clean reactor moved down the penetration gradient: `iters` steps of
     x ← x − (strength / iters)·(∇L + rigid·Σ_j ∇_j L), the second term the gradient with
     respect to a horizontal translation of the whole body, applied to every joint — with
     rigid > 0 the reactor steps back as a whole rather than bending away joint by joint
-    (strength in metres per unit gradient)."""
+    (strength in metres per unit gradient). spheres: the actor's `ActorSpheres` when already
+    built (then actor_centres and the radii are not read)."""
     x = np.asarray(reactor, dtype=np.float64).copy()
+    actor = spheres or ActorSpheres(actor_centres, reactor_radii, actor_radii, safe)
+    if x.ndim != 3 or x.shape[1:] != (sk.NUM_JOINTS, 3) or actor.centres.shape[0] != len(x):
+        raise ValueError(f"reactor joints (T, 22, 3) and actor centres (T, S, 3) expected, got "
+                         f"{x.shape} and {actor.centres.shape}")
     for _ in range(max(1, iters)):
-        loss, grad = penetration_loss(x, actor_centres, reactor_radii, actor_radii, safe)
+        loss, grad = _loss(x, actor)
         if loss == 0.0:
             break
         if rigid > 0:

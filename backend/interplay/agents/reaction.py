@@ -34,7 +34,7 @@ import numpy as np
 from ..motion import skeleton as sk
 from ..motion.kinematics import facing_angle, fit_offsets, fit_to_skeleton
 from ..motion.rotations import yaw_matrix
-from .penetration import guide, radii, sphere_centres
+from .penetration import ActorSpheres, guide, radii, sphere_centres
 
 WEIGHTS_DIR = Path(__file__).resolve().parents[3] / "models" / "weights" / "arflow"
 INPUTS = ("x_t", "t", "actor", "text")
@@ -126,11 +126,18 @@ def window_frame(actor_first: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def sampler_step(model: ReactionModel, x_k: np.ndarray, x0: np.ndarray, x1: np.ndarray,
                  t: float, t_next: float, actor_c: np.ndarray, scales,
-                 cfg: SamplingConfig, reproject: bool, rng: np.random.Generator) -> np.ndarray:
+                 cfg: SamplingConfig, reproject: bool, rng: np.random.Generator,
+                 spheres: ActorSpheres | None = None) -> np.ndarray:
     """One flow step for frames (..., 66) normalised: x_k the state, x0 the start, x1 the
     predicted clean reaction, actor_c (..., 22, 3) the actor in the same (canonical) frame,
-    scales the (actor, reactor) radius scales: one pair or one per frame (F, 2)."""
-    if cfg.guidance > 0:
+    scales the (actor, reactor) radius scales: one pair or one per frame (F, 2). spheres:
+    the actor's `actor_spheres` for all these frames, when the caller keeps them across flow
+    steps (the online sessions: one frame, five steps)."""
+    if cfg.guidance > 0 and spheres is not None:
+        pose = guide(model.denormalize(x1).reshape(-1, sk.NUM_JOINTS, 3), spheres.centres, 0.0,
+                     0.0, cfg.guidance, cfg.safe_distance, cfg.guidance_iters, cfg.rigid, spheres)
+        x1 = model.normalize(pose.reshape(*x1.shape[:-1], sk.NUM_JOINTS, 3))
+    elif cfg.guidance > 0:
         lead = x1.shape[:-1]
         pose = model.denormalize(x1).reshape(-1, sk.NUM_JOINTS, 3)
         act = actor_c.reshape(-1, sk.NUM_JOINTS, 3)
@@ -147,6 +154,15 @@ def sampler_step(model: ReactionModel, x_k: np.ndarray, x0: np.ndarray, x1: np.n
     if cfg.eta > 0:
         x0_t = x0_t + cfg.eta * rng.standard_normal(x0_t.shape)
     return ((1.0 - t_next) * x0_t + t_next * x1).astype(np.float32)
+
+
+def actor_spheres(actor_c: np.ndarray, scales, cfg: SamplingConfig) -> ActorSpheres | None:
+    """The guidance's view of actor frames (F, 22, 3) with radius scales (actor, reactor),
+    built once per arriving frame by the sessions; None without guidance."""
+    if cfg.guidance <= 0:
+        return None
+    return ActorSpheres(sphere_centres(actor_c), radii(scale=1.0) * scales[1],
+                        radii(scale=1.0) * scales[0], cfg.safe_distance)
 
 
 def sample_windows(model: ReactionModel, actor: np.ndarray, text: np.ndarray | None = None,
@@ -227,6 +243,7 @@ class ReactionSession:
         states = np.empty((cfg.steps + 1, sk.NUM_JOINTS, 3))
         states[0] = to_w(m.denormalize(x0[0]))
         past = np.stack(self.states[lo:]) if len(self.states) > lo else None   # (w−1, K+1, 22, 3)
+        spheres = actor_spheres(actor_c[-1:], self.scales, cfg)
         x_k = x0
         for k in range(cfg.steps):
             t, t_next = k / cfg.steps, (k + 1) / cfg.steps
@@ -234,7 +251,7 @@ class ReactionSession:
                 [m.normalize(to_c(past[:, k]))[None], x_k[:, None]], axis=1)
             x1 = m.predict(xs, np.array([t]), a_n, self.text)[:, -1]      # (1, 66)
             x_k = sampler_step(m, x_k, x0, x1, t, t_next, actor_c[-1:], self.scales, cfg,
-                               self.reproject, self.rng)
+                               self.reproject, self.rng, spheres)
             states[k + 1] = to_w(m.denormalize(x_k[0]))
         self.states.append(states)
         if self.offsets is None:

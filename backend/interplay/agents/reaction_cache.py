@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..motion import skeleton as sk
-from .reaction import ReactionSession, fixed_bones, sampler_step, window_frame
+from .reaction import ReactionSession, actor_spheres, fixed_bones, sampler_step, window_frame
 
 OUTPUTS = ["x1", "new_k", "new_v", "new_mem_k", "new_mem_v"]
 
@@ -78,13 +78,14 @@ class CachedReactionSession(ReactionSession):
         states = np.empty((cfg.steps + 1, sk.NUM_JOINTS, 3))
         states[0] = to_w(m.denormalize(x0[0]))
         x_k, pos = x0, n - self.anchor
+        spheres = actor_spheres(actor_c, self.scales, cfg)              # once for all steps
         for k in range(cfg.steps):
             t, t_next = k / cfg.steps, (k + 1) / cfg.steps
             out = self._call(k, x_k, t, a_n, pos)
             if k == 0:
                 new_mem = out[3:5]
             x_k = sampler_step(m, x_k, x0, out[0][:, 0], t, t_next, actor_c, self.scales, cfg,
-                               self.reproject, self.rng)
+                               self.reproject, self.rng, spheres)
             states[k + 1] = to_w(m.denormalize(x_k[0]))
         self.mem = [np.concatenate([c, nw], axis=3) for c, nw in zip(self.mem, new_mem)]
         self.states.append(states)
