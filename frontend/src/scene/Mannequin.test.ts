@@ -16,14 +16,14 @@ function pickAt(m: Mannequin, x: number, y: number): number | null {
   m.group.updateMatrixWorld(true);
   const ray = new THREE.Raycaster(new THREE.Vector3(x, y, 5), new THREE.Vector3(0, 0, -1));
   const hit = ray.intersectObjects(m.pickable, false)[0];
-  return hit?.instanceId === undefined ? null : (hit.object.userData.joints as number[])[hit.instanceId];
+  return hit?.face ? (hit.object.userData.vertexJoint as Uint8Array)[hit.face.a] : null;
 }
 
-describe("Mannequin (instanced)", () => {
-  it("draws a person with two meshes and picks the joint under a ray through the instances", () => {
+describe("Mannequin (one merged mesh)", () => {
+  it("draws a person as one mesh and picks the joint under a ray", () => {
     const m = new Mannequin(skeleton, 0, QUALITY.full);
     m.setPose(rest, new Set(), new Set());
-    expect(m.pickable).toHaveLength(2);
+    expect(m.pickable).toHaveLength(1);
     const [x, y] = [rest[3 * LEFT_ELBOW], rest[3 * LEFT_ELBOW + 1]];
     expect(pickAt(m, x, y)).toBe(LEFT_ELBOW);
     // the forearm between elbow and wrist is the bone ending at the wrist
@@ -41,21 +41,14 @@ describe("Mannequin (instanced)", () => {
     const m = new Mannequin(skeleton, 1, QUALITY.full);
     m.hovered = new Set([LEFT_ELBOW]);
     m.setPose(rest, new Set([LEFT_WRIST]), new Set());
-    const [, spheres] = m.pickable as THREE.InstancedMesh[];
-    const colour = (i: number) => {
-      const c = new THREE.Color();
-      spheres.getColorAt(i, c);
-      return "#" + c.getHexString();
-    };
-    expect(colour(LEFT_ELBOW)).toBe(HOVER_COLOUR);
-    expect(colour(LEFT_WRIST)).toBe("#39ff88");
-    const glow = spheres.geometry.getAttribute("glow");
-    expect(glow.getX(LEFT_WRIST)).toBeGreaterThan(0);
-    expect(glow.getX(0)).toBe(0);
+    expect(m.jointPaint(LEFT_ELBOW).colour).toBe(HOVER_COLOUR);
+    expect(m.jointPaint(LEFT_WRIST)).toEqual({ colour: "#39ff88", glow: expect.any(Number) });
+    expect(m.jointPaint(LEFT_WRIST).glow).toBeGreaterThan(0);
+    expect(m.jointPaint(0).glow).toBe(0);
     m.hovered = new Set();
     m.setPose(rest, new Set(), new Set());
-    expect(colour(LEFT_ELBOW)).not.toBe(HOVER_COLOUR);
-    expect(glow.getX(LEFT_WRIST)).toBe(0);
+    expect(m.jointPaint(LEFT_ELBOW).colour).not.toBe(HOVER_COLOUR);
+    expect(m.jointPaint(LEFT_WRIST).glow).toBe(0);
     m.dispose();
   });
 });

@@ -1,14 +1,14 @@
 // A person drawn as a cylinder per bone and a sphere per joint (the joint spheres, at least as
 // wide as the bones meeting there, close the cylinders' ends: together they are capsules),
-// coloured by body part. Two instanced meshes per person, so two draw calls whatever the
-// skeleton: per instance a matrix, a colour and a glow. Per frame: contact joints glow green,
-// bones of penetrating parts turn red; the selected / hovered part is painted on top.
+// coloured by body part, merged into one mesh per person (bodyMesh.ts): one draw call whatever
+// the skeleton. Per frame: contact joints glow green, bones of penetrating parts turn red; the
+// selected / hovered part is painted on top.
 import * as THREE from "three";
 import type { Skeleton } from "../api/types";
 import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
 import { blobMap } from "./blobShadow";
 import { QUALITY, type QualitySettings } from "./quality";
-import { Instances } from "./bodyInstances";
+import { BodyMesh } from "./bodyMesh";
 
 // Capsule radius (m) of the bone ending at a joint, by joint name.
 const BONE_RADIUS: [RegExp, number][] = [
@@ -48,14 +48,12 @@ export class Mannequin {
   private readonly bonePairs: [number, number][];
   private readonly boneRadii: number[];
   private readonly jointRadii: number[];
-  private readonly bones: Instances;
-  private readonly joints: Instances;
+  private readonly body: BodyMesh;
   private readonly blobs: { joint: number; mesh: THREE.Mesh; mat: THREE.MeshBasicMaterial }[] = [];
   private readonly a = new THREE.Vector3();
   private readonly b = new THREE.Vector3();
   private readonly q = new THREE.Quaternion();
   private readonly s = new THREE.Vector3();
-  private readonly m = new THREE.Matrix4();
 
   /** `quality`: tessellation, and shadows: cast them for the renderer's shadow map, or draw blob
    * shadows on the floor. Bones take their length from each pose. */
@@ -71,15 +69,22 @@ export class Mannequin {
       const adjacent = this.bonePairs.filter(([c, p]) => c === j || p === j).map(([c]) => boneRadius(skeleton.joints[c]));
       return name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
     });
-    // unit shapes, scaled per instance: a cylinder of radius 1 and length 1 along y (open: the
-    // joint spheres cover its ends), a sphere of radius 1
+    // unit shapes, scaled per piece: a cylinder of radius 1 and length 1 along y (open: the
+    // joint spheres cover its ends), a sphere of radius 1; bones first, then joints
     const cylinder = new THREE.CylinderGeometry(1, 1, 1, quality.capsule[1], 1, true);
-    this.bones = new Instances(cylinder, this.bonePairs.map(([child]) => colours[child]), quality,
-      { person, joints: this.bonePairs.map(([child]) => child) });
-    const lighter = colours.map((c) => "#" + new THREE.Color(c).lerp(new THREE.Color("#ffffff"), 0.18).getHexString());
     const sphere = new THREE.SphereGeometry(1, ...quality.sphere);
-    this.joints = new Instances(sphere, lighter, quality, { person, joints: skeleton.joints.map((_, j) => j) });
-    this.group.add(this.bones.mesh, this.joints.mesh);
+    const lighter = (c: string) => "#" + new THREE.Color(c).lerp(new THREE.Color("#ffffff"), 0.18).getHexString();
+    this.body = new BodyMesh(
+      [
+        ...this.bonePairs.map(([child]) => ({ shape: cylinder, joint: child, colour: colours[child] })),
+        ...skeleton.joints.map((_, j) => ({ shape: sphere, joint: j, colour: lighter(colours[j]) })),
+      ],
+      quality,
+      { person },
+    );
+    cylinder.dispose();
+    sphere.dispose();
+    this.group.add(this.body.mesh);
     if (!quality.shadowMap) {
       for (const [name, size] of BLOBS) {
         const mat = new THREE.MeshBasicMaterial({ map: blobMap(), transparent: true, depthWrite: false, opacity: 0.5 });
@@ -92,13 +97,18 @@ export class Mannequin {
     }
   }
 
+  /** The piece of the body mesh that is joint j's sphere. */
+  private sphereOf(j: number): number {
+    return this.bonePairs.length + j;
+  }
+
   private point(f: Float32Array, j: number, out: THREE.Vector3): THREE.Vector3 {
     return out.set(f[3 * j], f[3 * j + 1], f[3 * j + 2]);
   }
 
   /** Pose the mannequin: `joints` is one frame (66 floats); sets highlight colours. No allocation. */
   setPose(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
-    const { a, b, q, s, m } = this;
+    const { a, b, q, s, body } = this;
     for (let i = 0; i < this.bonePairs.length; i++) {
       const [child, parent] = this.bonePairs[i];
       this.point(joints, parent, a);
@@ -109,18 +119,17 @@ export class Mannequin {
       a.addScaledVector(b, len / 2); // the bone's middle
       const r = this.boneRadii[i];
       s.set(r, Math.max(len, 1e-4), r);
-      this.bones.mesh.setMatrixAt(i, m.compose(a, q, s));
-      this.bones.paint(i, penetrating.has(child) ? PENETRATION_COLOUR : this.pickColour(child), 0.45);
+      body.place(i, a, q, s);
+      body.paint(i, penetrating.has(child) ? PENETRATION_COLOUR : this.pickColour(child), 0.45);
     }
     q.identity();
     for (let j = 0; j < this.jointRadii.length; j++) {
       const contact = contacts.has(j);
       s.setScalar(this.jointRadii[j] * (contact ? 1.3 : 1));
-      this.joints.mesh.setMatrixAt(j, m.compose(this.point(joints, j, a), q, s));
-      this.joints.paint(j, contact ? CONTACT_COLOUR : this.pickColour(j), 0.7);
+      body.place(this.sphereOf(j), this.point(joints, j, a), q, s);
+      body.paint(this.sphereOf(j), contact ? CONTACT_COLOUR : this.pickColour(j), 0.7);
     }
-    this.bones.posed();
-    this.joints.posed();
+    body.posed();
     for (const { joint, mesh, mat } of this.blobs) {
       const y = joints[3 * joint + 1];
       mesh.position.set(joints[3 * joint], 0.003, joints[3 * joint + 2]);
@@ -131,10 +140,15 @@ export class Mannequin {
     }
   }
 
-  /** Meshes a pointer ray can hit: the two instanced meshes; userData {person, joints}, where
-   * joints[instanceId] is the joint (a bone: its child joint) the hit instance stands for. */
+  /** Meshes a pointer ray can hit: the body; userData {person, vertexJoint}, where
+   * vertexJoint[face.a] is the joint (a bone: its child joint) a hit triangle belongs to. */
   get pickable(): THREE.Object3D[] {
-    return [this.bones.mesh, this.joints.mesh];
+    return [this.body.mesh];
+  }
+
+  /** Colour and glow shown now on joint j's sphere (for tests). */
+  jointPaint(j: number): { colour: string; glow: number } {
+    return this.body.colourOf(this.sphereOf(j));
   }
 
   private pickColour(j: number): string | null {
@@ -142,8 +156,7 @@ export class Mannequin {
   }
 
   dispose(): void {
-    this.bones.dispose();
-    this.joints.dispose();
+    this.body.dispose();
     for (const { mesh, mat } of this.blobs) {
       mesh.geometry.dispose();
       mat.dispose();

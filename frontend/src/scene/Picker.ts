@@ -34,10 +34,10 @@ export class Picker {
 
   /** The nearest mannequin joint (or bone, by its child joint) under the pointer. */
   joint(clientX: number, clientY: number, meshes: THREE.Object3D[]): JointHit | null {
-    // instanced meshes (Mannequin.pickable): userData.joints[instanceId] is the joint
+    // merged body meshes (Mannequin.pickable): userData.vertexJoint[face.a] is the joint
     const hit = this.aim(clientX, clientY).intersectObjects(meshes, false)[0];
-    const data = hit?.object.userData as { person?: number; joints?: number[] } | undefined;
-    const joint = hit?.instanceId !== undefined ? data?.joints?.[hit.instanceId] : undefined;
+    const data = hit?.object.userData as { person?: number; vertexJoint?: Uint8Array } | undefined;
+    const joint = hit?.face ? data?.vertexJoint?.[hit.face.a] : undefined;
     return typeof data?.person === "number" && typeof joint === "number" ? { person: data.person, joint } : null;
   }
 

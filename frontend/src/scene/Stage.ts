@@ -6,7 +6,7 @@ import type { Skeleton } from "../api/types";
 import type { FrameBuffer } from "../playback/frameBuffer";
 import { contactJoints, penetratingBones } from "./colours";
 import { Ground } from "./Ground";
-import { LineGround } from "./LineGround";
+import { FLOOR_COLOUR, LineGround } from "./LineGround";
 import { Mannequin } from "./Mannequin";
 import { PathOverlay } from "./PathOverlay";
 import { QUALITY, type Quality, type QualitySettings } from "./quality";
@@ -38,8 +38,8 @@ export class Stage {
     this.renderer.shadowMap.enabled = settings.shadowMap;
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
     this.renderer.toneMapping = THREE.ACESFilmicToneMapping;
-    this.scene.background = new THREE.Color(BACKGROUND);
-    this.ground = settings.gridLines ? new LineGround(BACKGROUND) : new Ground(BACKGROUND, settings.shadowMap);
+    this.scene.background = new THREE.Color(settings.gridLines ? FLOOR_COLOUR : BACKGROUND);
+    this.ground = settings.gridLines ? new LineGround() : new Ground(BACKGROUND, settings.shadowMap);
 
     this.scene.add(new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4));
     this.sun.position.set(3, 7, 5);
@@ -82,8 +82,8 @@ export class Stage {
     for (let p = 0; p < buffer.persons; p++) {
       const m = new Mannequin(skeleton, p, this.settings);
       m.group.visible = !this.debug.hide.has("people");
-      // blob shadows: the mannequin's meshes that are not its two instanced ones
-      for (const c of m.group.children) if (!(c instanceof THREE.InstancedMesh)) c.visible = !this.debug.hide.has("blobs");
+      // blob shadows: the mannequin's meshes that are not its body
+      for (const c of m.group.children) if (!m.pickable.includes(c)) c.visible = !this.debug.hide.has("blobs");
       this.mannequins.push(m);
       this.scene.add(m.group);
     }

@@ -1,5 +1,5 @@
-// Materials of the instanced mannequin meshes. Both read the per-instance colour (instanceColor)
-// and a per-instance glow (attribute `glow`: 0, or how strongly a highlight emits its colour).
+// Materials of the mannequin meshes (bodyMesh.ts). Both read the vertex colour (`color`) and a
+// glow per vertex (attribute `glow`: 0, or how strongly a highlight emits its colour).
 // - light (software WebGL): lighting per vertex. The vertex shader does the stage's lights
 //   (hemisphere + sun + fill, Lambert), the glow, ACES tone mapping and the sRGB encoding; the
 //   fragment shader only writes the interpolated colour. A software rasteriser pays per pixel, and
@@ -44,16 +44,14 @@ const vertexShader = /* glsl */ `
   }
 
   void main() {
-    mat4 model = modelMatrix * instanceMatrix;
-    // the instances scale x and z alike (cylinders: radius, length; spheres: uniform), so the
-    // normal matrix is the model matrix's upper 3×3 up to a length
-    vec3 n = normalize(mat3(model) * normal);
+    // the mesh is never scaled: world normals are the model matrix's rotation of the normals
+    vec3 n = normalize(mat3(modelMatrix) * normal);
     vec3 irradiance = mix(uGround, uSky, 0.5 * n.y + 0.5)
       + max(dot(n, uSunDir), 0.0) * uSun + max(dot(n, uFillDir), 0.0) * uFill;
-    vec3 albedo = instanceColor;
+    vec3 albedo = color;
     vec3 radiance = albedo * 0.95 * irradiance * 0.3183099 + albedo * glow;
     vColour = srgb(aces(radiance));
-    gl_Position = projectionMatrix * viewMatrix * model * vec4(position, 1.0);
+    gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
   }
 `;
 
@@ -77,13 +75,14 @@ export function vertexLitMaterial(): THREE.ShaderMaterial {
     },
     vertexShader,
     fragmentShader,
+    vertexColors: true,
     toneMapped: false,
   });
 }
 
-/** PBR material whose emissive light adds each instance's `glow` × its colour. */
+/** PBR material whose emissive light adds each vertex's `glow` × its colour. */
 export function standardGlowMaterial(): THREE.MeshStandardMaterial {
-  const mat = new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05 });
+  const mat = new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05, vertexColors: true });
   mat.onBeforeCompile = (shader) => {
     shader.vertexShader = shader.vertexShader
       .replace("#include <common>", "#include <common>\nattribute float glow;\nvarying float vGlow;")

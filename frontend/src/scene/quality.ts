@@ -17,7 +17,7 @@ export interface QualitySettings {
 
 export const QUALITY: Record<Quality, QualitySettings> = {
   full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12], gridLines: false },
-  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [10, 7], gridLines: true },
+  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [8, 6], gridLines: true },
 };
 
 const SOFTWARE = /swiftshader|llvmpipe|softpipe|software|basic render/i;
