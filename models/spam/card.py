@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from .config import PARTS
@@ -56,6 +57,40 @@ def _transformer_rows(numbers: dict) -> list[str]:
             rows.append(f"| {name} {kind} | {n[f'{kind}_steps']} | {_f(tr['ce'])} | {tr['acc']:.1%} "
                         f"| {_f(va['ce'])} | {va['acc']:.1%} |")
     return rows
+
+
+EVAL_LABELS = {"real": "real test motion", "retrieval": "retrieval (train captures)",
+               "spam": "**SPAM, shipped** (int8 transformers)", "spam_fp32": "SPAM, float transformers",
+               "spam_nocs": "SPAM without commonsense losses", "spam_vq": "SPAM VQ reconstruction",
+               "single_vq": "single-codebook VQ reconstruction"}
+
+
+def _eval_rows(eval_path: Path) -> list[str]:
+    """The headline of `interplay eval --json` saved next to the card as eval.json (written
+    by hand after an eval run: the eval needs the exported weights and takes minutes)."""
+    if not eval_path.is_file():
+        return ["## Evaluation", "Not run yet: `interplay eval --json > "
+                "models/weights/spam/eval.json`, then rewrite this card.", ""]
+    rep = json.loads(eval_path.read_text())
+    ts, cell = rep["test_set"], lambda v, d=3, k=1: "–" if v is None else f"{v[0] * k:.{d}f}±{v[1] * k:.{d}f}"
+    lines = ["## Evaluation (text-to-motion metrics)",
+             f"`interplay eval --json > models/weights/spam/eval.json` on the test split with the "
+             f"project's TMR-style evaluator ({ts['samples']} windows, {ts['texts']} prompts, "
+             f"{rep['config']['repeats']} repeats, mean ± 95% CI); protocol and reading in "
+             "[`docs/eval.md`](../../../docs/eval.md).", "",
+             "| row | R@1 | R@3 | FID | MM-Dist | Diversity | MultiModality | foot skate (m/s) "
+             "| penetration (cm) | COM angle (°) |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for name, r in rep["rows"].items():
+        lines.append(f"| {EVAL_LABELS.get(name, name)} | " + " | ".join(
+            cell(r.get(k)) for k in ("top1", "top3", "fid", "mm_dist", "diversity",
+                                     "multimodality")) + f" | {cell(r.get('foot_skating'))} | "
+            f"{cell(r.get('ground_penetration'), 2, 100)} | {cell(r.get('com_angle'), 1)} |")
+    for name, cases in rep.get("edits", {}).items():
+        conf = [c["confirmed"] for c in cases]
+        lines.append(f"\nPart edits ({name}): the captioner confirms the edited part in "
+                     f"{sum(conf) / max(1, len(conf)):.0%} of frames on average over "
+                     f"{len(cases)} cases (docs/eval.md lists them).")
+    return lines + [""]
 
 
 def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
@@ -135,6 +170,7 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         "",
         f"Evaluator: {numbers['evaluator']}.",
         "",
+        *_eval_rows(path.parent / "eval.json"),
         "## Limits",
         "- ~30k train frames (60k with mirroring), 29 distinct prompts and ~200 automatic part "
         "captions: the transformers learn these families, not open-vocabulary text.",

@@ -248,3 +248,27 @@ def test_shipped_int8_transformers_agree_with_float():
     a, b = f32._base(tokens, text, cond), i8._base(tokens, text, cond)
     agree = (a.argmax(-1) == b.argmax(-1))[tokens == f32.config.mask_id].mean()
     assert agree > 0.85, agree
+
+
+def test_regenerate_edit_raises_the_arm_of_a_captured_walk_and_keeps_the_legs(walk):
+    """The default part edit on a real capture with the trained weights: the left hand goes
+    above the head in the edited range, the legs and the frames outside stay as captured;
+    the CoMA in-painting mode is still there and keeps the legs too."""
+    from interplay.motion.posecodes import frame_codes
+    rt = SpamRuntime.load()
+    prompt = "the left arm is raised above the head"
+    before = frame_codes(walk)["left_hand_above_head"][20:100].mean()
+    legs = [int(j) for j in sk.PART_JOINTS["left_lower"]] + [int(j) for j in sk.PART_JOINTS["right_lower"]]
+    shares = []
+    for seed in range(3):
+        e = rt.edit(walk, ["left_upper"], prompt, seed, frames=(20, 100))
+        assert e.steps < rt.config.steps                 # half the generation steps
+        assert np.abs(e.joints[:, legs] - walk[:, legs]).max() < 0.005   # re-decoded on fixed bones
+        assert np.array_equal(e.joints[:20], walk[:20]) and np.array_equal(e.joints[100:], walk[100:])
+        shares.append(frame_codes(e.joints)["left_hand_above_head"][20:100].mean())
+    assert before < 0.05 and max(shares) > 0.3, (before, shares)
+    e = rt.edit(walk, ["left_upper"], prompt, 0, frames=(20, 100), mode="inpaint",
+                context="a person dribbles a ball")
+    assert np.abs(e.joints[:, legs] - walk[:, legs]).max() < 0.005
+    with pytest.raises(ValueError, match="edit mode"):
+        rt.edit(walk, ["left_upper"], prompt, 0, mode="paint")
