@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { advance, formatSeconds, frameIndex, playFrom, scrubFrame } from "./timeline";
+import { advance, blendAt, formatSeconds, frameIndex, playFrom, scrubFrame } from "./timeline";
 
 const ctx = { fps: 20, speed: 1, loop: false, available: 60, total: 60 };
 
@@ -31,5 +31,12 @@ describe("timeline", () => {
     expect(formatSeconds(60, 20)).toBe("3.00 s");
     expect(playFrom(59, 60, 60)).toBe(0);
     expect(playFrom(30, 60, 60)).toBe(30);
+  });
+
+  it("blends towards the next frame while inside the clip, never past its end", () => {
+    expect(blendAt(3.25, 10)).toEqual({ frame: 3, next: 4, weight: 0.25 });
+    expect(blendAt(9.5, 10)).toEqual({ frame: 9, next: 9, weight: 0 });
+    expect(blendAt(4, 10)).toEqual({ frame: 4, next: 5, weight: 0 });
+    expect(blendAt(0.5, 1)).toEqual({ frame: 0, next: 0, weight: 0 });
   });
 });

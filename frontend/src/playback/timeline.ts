@@ -37,6 +37,16 @@ export function frameIndex(pos: number, available: number): number {
   return Math.min(available - 1, Math.max(0, Math.floor(pos)));
 }
 
+/** What to draw at a clock position while playing: frame `frame` blended towards `next` by
+ * `weight` (joints interpolated between the 20 fps samples, so a display's every refresh shows a
+ * new pose). No blend past the last playable frame (nor across a loop's seam). */
+export function blendAt(pos: number, available: number): { frame: number; next: number; weight: number } {
+  const frame = frameIndex(pos, available);
+  const next = Math.min(available - 1, frame + 1);
+  const weight = next > frame ? Math.min(1, Math.max(0, pos - frame)) : 0;
+  return { frame, next, weight };
+}
+
 /** Frame under a scrubber fraction in [0, 1] of a clip of `total` frames. */
 export function scrubFrame(fraction: number, total: number): number {
   if (total <= 1) return 0;

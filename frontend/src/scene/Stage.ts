@@ -23,6 +23,11 @@ export class Stage {
   private readonly ground: Ground | LineGround;
   private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
+  /** Per person: the joints of a pose blended between two frames (reused, no allocation). */
+  private readonly blended: Float32Array[] = [];
+  private readonly centre = new THREE.Vector3();
+  private readonly centreNext = new THREE.Vector3();
+  private readonly delta = new THREE.Vector3();
   private dirty = true;
   private readonly debug = debugFlags();
   readonly path = new PathOverlay();
@@ -154,9 +159,10 @@ export class Stage {
 
   /** Keep the people in view: move the camera (and what depends on it) with their centre,
    * keeping the user's orbit. */
-  private follow(buffer: FrameBuffer, t: number): void {
-    const centre = this.centreAt(buffer, t, new THREE.Vector3());
-    const delta = new THREE.Vector3(centre.x - this.controls.target.x, 0, centre.z - this.controls.target.z);
+  private follow(buffer: FrameBuffer, t: number, next: number, weight: number): void {
+    const centre = this.centreAt(buffer, t, this.centre);
+    if (weight > 0) centre.lerp(this.centreAt(buffer, next, this.centreNext), weight);
+    const delta = this.delta.set(centre.x - this.controls.target.x, 0, centre.z - this.controls.target.z);
     if (delta.lengthSq() < 1e-10) return;
     this.controls.target.add(delta);
     this.camera.position.add(delta);
@@ -170,16 +176,24 @@ export class Stage {
     this.ground.centreOn(centre.x, centre.z);
   }
 
-  /** Pose every mannequin at frame t of the buffer and follow them with the camera. */
-  pose(skeleton: Skeleton, buffer: FrameBuffer, t: number): void {
+  /** Pose every mannequin at frame t of the buffer — blended by `weight` towards frame `next`
+   * (playback between samples; highlights are frame t's) — and follow them with the camera. */
+  pose(skeleton: Skeleton, buffer: FrameBuffer, t: number, next = t, weight = 0): void {
     this.mannequins.forEach((m, p) => {
+      let joints = buffer.frame(p, t);
+      if (weight > 0 && next !== t) {
+        const b = buffer.frame(p, next);
+        const out = (this.blended[p] ??= new Float32Array(joints.length));
+        for (let i = 0; i < joints.length; i++) out[i] = joints[i] + (b[i] - joints[i]) * weight;
+        joints = out;
+      }
       m.setPose(
-        buffer.frame(p, t),
+        joints,
         contactJoints(buffer.contacts[t], p),
         penetratingBones(skeleton, buffer.penetration[t], p),
       );
     });
-    this.follow(buffer, t);
+    this.follow(buffer, t, next, weight);
     this.dirty = true;
   }
 

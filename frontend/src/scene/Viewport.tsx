@@ -1,8 +1,9 @@
 // Hosts the three.js Stage and runs the render loop: advances the playback clock, poses the
-// mannequins from the FrameBuffer and renders when something changed. No per-frame React state
+// mannequins from the FrameBuffer (while playing, blended between the 20 fps frames, so each
+// display refresh gets a new pose) and renders when something changed. No per-frame React state
 // except the integer frame number the timeline shows.
 import { useEffect, useRef } from "react";
-import { advance, frameIndex } from "../playback/timeline";
+import { advance, blendAt } from "../playback/timeline";
 import { FPS, frames, playhead, renderStats, useStudio } from "../store";
 import { jointsOfPart } from "../directing/parts";
 import { Vector3 } from "three";
@@ -35,7 +36,7 @@ export function Viewport() {
     sceneProbe.ground = (cx, cy) => picker.ground(cx, cy);
     let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1 };
     let generation = -1; // which FrameBuffer contents the mannequins were built for
-    let drawn = { frame: -1, version: -1 };
+    let drawn = { pos: -1, version: -1 };
     let last = performance.now();
     let raf = 0;
 
@@ -51,7 +52,7 @@ export function Viewport() {
         if (skeleton && frames.received > 0) {
           stage.setPeople(skeleton, frames);
           generation = frames.generation;
-          drawn = { frame: -1, version: -1 };
+          drawn = { pos: -1, version: -1 };
         }
       }
       stage.controls.enabled = s.tool !== "path";
@@ -67,7 +68,7 @@ export function Viewport() {
           stage.setSelection(sets(s.selected), sets(s.tool === "part" ? pointer.hover : null));
         }
         overlay = { pointer: pointer.version, path: s.path, tool: s.tool, selected: s.selected, gen: generation };
-        drawn = { frame: -1, version: -1 };
+        drawn = { pos: -1, version: -1 };
         stage.markDirty();
       }
       if (stage.people > 0 && skeleton) {
@@ -79,12 +80,16 @@ export function Viewport() {
           total: frames.total,
         });
         playhead.pos = clock.pos;
-        const f = frameIndex(clock.pos, frames.received);
+        // playing: every refresh draws the pose between the two frames around the clock;
+        // paused: exactly the frame shown (what the timeline and the test hook name)
+        const blend = blendAt(clock.pos, frames.received);
+        const f = blend.frame;
+        const pos = clock.playing ? f + blend.weight : f;
         if (clock.playing !== s.playing) s.setPlaying(clock.playing);
         if (f !== s.frame) useStudio.setState({ frame: f });
-        if (f !== drawn.frame || frames.version !== drawn.version) {
-          stage.pose(skeleton, frames, f);
-          drawn = { frame: f, version: frames.version };
+        if (pos !== drawn.pos || frames.version !== drawn.version) {
+          stage.pose(skeleton, frames, f, blend.next, clock.playing ? blend.weight : 0);
+          drawn = { pos, version: frames.version };
         }
       }
       if (stage.renderIfDirty()) renderStats.renders++;
