@@ -1,7 +1,7 @@
 // End-to-end tests against the real app: `interplay serve` on a free port with a throwaway
 // var dir (database), serving the built front end (frontend/dist), driven in Debian's chromium.
 import { defineConfig } from "@playwright/test";
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, symlinkSync } from "node:fs";
+import { existsSync, mkdtempSync } from "node:fs";
 import { createServer } from "node:net";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
@@ -25,25 +25,8 @@ function freePort(): Promise<number> {
 // which workers inherit.
 process.env.INTERPLAY_E2E_PORT ??= String(await freePort());
 process.env.INTERPLAY_E2E_VAR ??= mkdtempSync(join(tmpdir(), "interplay-e2e-"));
-process.env.INTERPLAY_E2E_SPAM_PORT ??= String(await freePort());
 const port = Number(process.env.INTERPLAY_E2E_PORT);
 const baseURL = `http://127.0.0.1:${port}`;
-const spamPort = Number(process.env.INTERPLAY_E2E_SPAM_PORT);
-
-/** SPAM's weights without the placeholder model card: the shipped graphs are untrained, so the
- * main server runs retrieval and answers 503 to part edits. The part-edit spec needs an edit to
- * happen (the splice keeps untouched parts whatever the model draws), so a second server loads
- * the same graphs through this directory of links. */
-function spamDirForEdits(): string {
-  const dir = join(process.env.INTERPLAY_E2E_VAR!, "spam-untrained");
-  mkdirSync(join(process.env.INTERPLAY_E2E_VAR!, "spam-var"), { recursive: true });
-  if (!existsSync(dir)) {
-    mkdirSync(dir, { recursive: true });
-    const src = join(repo, "models", "weights", "spam");
-    for (const f of readdirSync(src)) if (f !== "MODEL_CARD.md") symlinkSync(join(src, f), join(dir, f));
-  }
-  return dir;
-}
 
 if (!existsSync(join(repo, "frontend", "dist", "index.html"))) {
   throw new Error("frontend/dist is missing: run `npm run build --workspace frontend` (or `make test`) first");
@@ -95,20 +78,6 @@ export default defineConfig({
       stdout: "ignore",
       stderr: "pipe",
       env: { INTERPLAY_VAR_DIR: process.env.INTERPLAY_E2E_VAR },
-    },
-    {
-      // the part-edit spec's server: SPAM loaded (untrained graphs), its own database
-      command: `${join(repo, ".venv", "bin", "interplay")} serve --host 127.0.0.1 --port ${spamPort}`,
-      cwd: repo,
-      url: `http://127.0.0.1:${spamPort}/api/skeleton`,
-      reuseExistingServer: false,
-      timeout: 120_000,
-      stdout: "ignore",
-      stderr: "pipe",
-      env: {
-        INTERPLAY_VAR_DIR: join(process.env.INTERPLAY_E2E_VAR!, "spam-var"),
-        INTERPLAY_SPAM_DIR: spamDirForEdits(),
-      },
     },
   ],
 });

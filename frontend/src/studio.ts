@@ -38,6 +38,12 @@ function handleEvent(ev: StreamEvent): void {
   useStudio.setState((s) => ({ stream: reduceStream(s.stream, ev) }));
   if (ev.type === "error") {
     useStudio.setState({ error: ev.cancelled ? null : ev.message });
+    // cancelled: back to an empty, idle stage (the partial frames are not a motion)
+    if (ev.cancelled) {
+      frames.reset(frames.persons);
+      playhead.pos = 0;
+      useStudio.setState({ frame: 0, playing: false });
+    }
     stream = null;
   } else if (ev.type === "done") {
     stream = null;
