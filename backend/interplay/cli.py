@@ -269,6 +269,21 @@ def cmd_data(args) -> int:
     return int(build_main(args.rest) or 0)
 
 
+def _sampling_args(items: list[str] | None) -> list[tuple[str, object]]:
+    """["cfg=2.5", "mode=inpaint"] → [("cfg", 2.5), ("mode", "inpaint")] (numbers parsed)."""
+    out = []
+    for item in items or []:
+        key, sep, value = item.partition("=")
+        if not sep or not key.strip():
+            raise CliError(f"--sampling takes KEY=VALUE, got {item!r}")
+        try:
+            parsed: object = int(value) if value.strip().lstrip("-").isdigit() else float(value)
+        except ValueError:
+            parsed = value
+        out.append((key.strip(), parsed))
+    return out
+
+
 def cmd_eval(args) -> int:
     from .eval.report import EvalConfig, format_table, run_eval
     from .eval.rows import ROW_NAMES
@@ -277,10 +292,13 @@ def cmd_eval(args) -> int:
     if unknown or not rows:
         raise CliError(f"--rows: unknown row(s) {unknown}; expected some of {','.join(ROW_NAMES)}")
     try:
-        cfg = EvalConfig(repeats=args.repeats, seed=args.seed)
+        cfg = EvalConfig(repeats=args.repeats, seed=args.seed, split=args.split,
+                         sampling=tuple(_sampling_args(args.sampling)))
         report = run_eval(rows, cfg, log=lambda m: print(m, file=sys.stderr))
     except (ValueError, FileNotFoundError) as exc:
         raise CliError(str(exc)) from None
+    except TypeError as exc:     # a --sampling key the runtime does not take
+        raise CliError(f"--sampling: {exc}") from None
     print(json.dumps(report, indent=1) if args.json else format_table(report))
     return 0
 
@@ -407,9 +425,13 @@ def build_parser() -> argparse.ArgumentParser:
                        "generator on the test split, with 95%% confidence intervals")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--repeats", type=int, default=10, help="repeats for the CIs (default 10)")
-    p.add_argument("--rows", help="comma-separated: real,retrieval,spam,spam_nocs,spam_vq,"
-                   "single_vq (default all; rows without weights are skipped)")
+    p.add_argument("--rows", help="comma-separated: real,retrieval,spam,spam_fp32,spam_nocs,"
+                   "spam_vq,single_vq (default all; rows without weights are skipped)")
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--split", choices=("test", "val"), default="test",
+                   help="val: choose settings there (its own edit cases), never on test")
+    p.add_argument("--sampling", nargs="*", metavar="KEY=VALUE",
+                   help="SPAM rows' settings, e.g. cfg=2.5 steps=10 mode=inpaint")
     p.set_defaults(func=cmd_eval)
 
     p = sub.add_parser("react", help="generate a reactor (ARFlow) for person 0 of a motion "

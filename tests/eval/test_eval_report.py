@@ -31,6 +31,26 @@ def test_cli_eval_refuses_unknown_rows(capsys):
     assert cli.main(["eval", "--rows", "real", "--repeats", "1"]) == 2
 
 
+def test_cli_eval_validation_split_and_sampling_arguments(capsys):
+    assert cli.main(["eval", "--rows", "real", "--repeats", "2", "--split", "val", "--json"]) == 0
+    val = json.loads(capsys.readouterr().out)
+    test = {s.clip for s in split_samples(default_clips(), "test")}
+    assert 10 < val["test_set"]["samples"] and val["config"]["split"] == "val"
+    assert not test & {s.clip for s in split_samples(default_clips(), "val")}
+    assert cli._sampling_args(["cfg=2.5", "steps=5", "mode=inpaint"]) == [
+        ("cfg", 2.5), ("steps", 5), ("mode", "inpaint")]
+    assert cli.main(["eval", "--rows", "real", "--sampling", "cfg"]) == 2
+    assert "KEY=VALUE" in capsys.readouterr().err
+
+
+def test_spam_row_takes_sampling_overrides():
+    row = R.load_row("spam", default_clips(), {"cfg": 2.5, "steps": 3, "mode": "inpaint"})
+    a = row.generate("a person walks forward", 40, 1)
+    assert a.shape == (40, 22, 3)
+    with pytest.raises(TypeError):
+        R.load_row("spam", default_clips(), {"nope": 1}).generate("a person jumps", 40, 1)
+
+
 class _FakeEvaluator:
     """Embeds a motion by its mean pelvis height (enough to tell shuffled motions apart)."""
 

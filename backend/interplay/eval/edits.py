@@ -43,6 +43,17 @@ CASES = (
     EditCase("a person squats down and stands back up", "right_upper",
              "the right arm is stretched out to the side", "right_arm_sideways"),
 )
+# Other bases, parts and prompts, for choosing edit settings on `interplay eval --split val`.
+VAL_CASES = (
+    EditCase("a person jogs", "right_upper", "the right arm is raised above the head",
+             "right_hand_above_head"),
+    EditCase("a person kicks", "left_upper", "the left arm is stretched out to the side",
+             "left_arm_sideways"),
+    EditCase("a person jumps", "right_upper", "the right hand is near the face",
+             "right_hand_near_face"),
+    EditCase("a person walks backwards", "left_upper", "the left arm is raised above the head",
+             "left_hand_above_head"),
+)
 FRAMES = 120             # 6 s
 
 

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..motion.metrics import clip_metrics
 from . import metrics as M
-from .edits import edit_fidelity
+from .edits import CASES, VAL_CASES, edit_fidelity
 from .rows import ROW_NAMES, Row, Skip, load_row
 from .testset import split_samples
 
@@ -38,10 +38,14 @@ class EvalConfig:
     diversity_pairs: int = 300
     edit_seeds: int = 3
     seed: int = 0
+    split: str = "test"         # "val" for choosing settings (never tune on test)
+    sampling: tuple = ()        # ((key, value), …) passed to the model rows' generate/edit
 
     def __post_init__(self):
         if self.repeats < 2 or self.rounds < 1 or self.mm_generations < 2 or self.edit_seeds < 0:
             raise ValueError("need repeats >= 2, rounds >= 1, mm_generations >= 2, edit_seeds >= 0")
+        if self.split not in ("test", "val"):
+            raise ValueError(f"split must be 'test' or 'val', got {self.split!r}")
 
 
 def _physical(motions: list[np.ndarray]) -> np.ndarray:
@@ -115,7 +119,7 @@ def run_eval(rows=ROW_NAMES, cfg: EvalConfig = EvalConfig(), clips=None, evaluat
     t0 = time.time()
     clips = clips if clips is not None else default_clips()
     evaluator = evaluator or load_evaluator()
-    samples = split_samples(clips, "test")
+    samples = split_samples(clips, cfg.split)
     real_emb = evaluator.embed_motion([s.joints for s in samples])
     text_emb = evaluator.embed_text([s.text for s in samples])
     report = {"config": asdict(cfg), "rows": {}, "skipped": {}, "edits": {},
@@ -125,7 +129,7 @@ def run_eval(rows=ROW_NAMES, cfg: EvalConfig = EvalConfig(), clips=None, evaluat
     for name in rows:
         t = time.time()
         try:
-            row = load_row(name, clips)
+            row = load_row(name, clips, dict(cfg.sampling))
         except Skip as exc:
             report["skipped"][name] = str(exc)
             if log:
@@ -133,7 +137,8 @@ def run_eval(rows=ROW_NAMES, cfg: EvalConfig = EvalConfig(), clips=None, evaluat
             continue
         result = evaluate_row(row, samples, real_emb, text_emb, evaluator, cfg, log)
         if row.edit is not None and cfg.edit_seeds:
-            report["edits"][name] = edit_fidelity(row.generate, row.edit, cfg.edit_seeds)
+            report["edits"][name] = edit_fidelity(row.generate, row.edit, cfg.edit_seeds,
+                                                  cases=VAL_CASES if cfg.split == "val" else CASES)
         report["rows"][name] = {"kind": row.kind, "source": row.source,
                                 "seconds": round(time.time() - t, 1), **result}
         if log:

@@ -73,7 +73,11 @@ def _retrieval(clips) -> Row:
     return Row("retrieval", "generated", generate=generate, source="train-split captures")
 
 
-def _spam(name: str, weights: Path, precision: str | None = None) -> Row:
+def _spam(name: str, weights: Path, precision: str | None = None, sampling=None) -> Row:
+    """SPAM's runtime; `sampling` overrides generation/edit settings (cfg, steps, temperature,
+    and for edits mode) — for `interplay eval --split val --sampling …`."""
+    sampling = dict(sampling or {})
+    edit_kw = {k: sampling.pop(k) for k in ("mode", "keep_noise") if k in sampling}
     _trained(weights)
     from ..agents.spam import SpamRuntime
     try:
@@ -82,8 +86,9 @@ def _spam(name: str, weights: Path, precision: str | None = None) -> Row:
         raise Skip(str(exc)) from None
 
     def edit(joints, parts, prompt, seed, context):
-        return rt.edit_parts(joints, parts, prompt, seed, context=context)
-    return Row(name, "generated", generate=lambda text, frames, seed: rt.generate(text, frames, seed),
+        return rt.edit_parts(joints, parts, prompt, seed, context=context, **sampling, **edit_kw)
+    return Row(name, "generated",
+               generate=lambda text, frames, seed: rt.generate(text, frames, seed, **sampling),
                edit=edit, source=str(weights.relative_to(WEIGHTS.parents[1])))
 
 
@@ -115,16 +120,17 @@ def _vq(name: str, weights: Path) -> Row:
                source=str(weights.relative_to(WEIGHTS.parents[1])))
 
 
-def load_row(name: str, clips) -> Row:
-    """The row called `name`; raises Skip when its weights are not here."""
+def load_row(name: str, clips, sampling: dict | None = None) -> Row:
+    """The row called `name`; raises Skip when its weights are not here. `sampling` goes to
+    the SPAM rows (see `_spam`)."""
     if name == "real":
         return Row("real", "real", source="test split captures")
     if name == "retrieval":
         return _retrieval(clips)
     if name in ("spam", "spam_nocs"):
-        return _spam(name, WEIGHTS / name)
+        return _spam(name, WEIGHTS / name, sampling=sampling)
     if name == "spam_fp32":
-        return _spam(name, WEIGHTS / "spam", precision="fp32")
+        return _spam(name, WEIGHTS / "spam", precision="fp32", sampling=sampling)
     if name == "spam_vq":
         return _vq(name, WEIGHTS / "spam")
     if name == "single_vq":
