@@ -11,7 +11,10 @@ import * as THREE from "three";
 
 /** The floor colour of Ground.ts: the light stage's background. */
 export const FLOOR_COLOUR = "#181b22";
-const GRID_RADIUS = 14; // m: the lines fade out by here
+// m: where the lines have faded out. Minor lines sooner: far away, at a grazing angle, lines
+// 0.5 m apart crowd into a band of aliased pixels (there is no MSAA in light quality).
+const MAJOR_RADIUS = 14;
+const MINOR_RADIUS = 8;
 const PIECE = 2; // m
 const MINOR = 0.5;
 const MAJOR = 2;
@@ -53,21 +56,23 @@ export class LineGround {
   constructor() {
     const floorColour = display(FLOOR_COLOUR);
     const c = new THREE.Color();
-    // the grid: lines x = k·0.5 and z = k·0.5 within the radius, in 2 m pieces
+    // the grid: lines x = k·0.5 and z = k·0.5 within their radius, in 2 m pieces
     const minor = display("#252a34");
     const major = display("#363e4e");
     const points: number[] = [];
     const cols: number[] = [];
-    const ends = (t: number) => Math.sqrt(GRID_RADIUS * GRID_RADIUS - t * t);
-    for (let k = -GRID_RADIUS / MINOR; k <= GRID_RADIUS / MINOR; k++) {
+    for (let k = -MAJOR_RADIUS / MINOR; k <= MAJOR_RADIUS / MINOR; k++) {
       const t = k * MINOR;
-      const lineColour = Math.abs(t % MAJOR) < 1e-6 ? major : minor;
-      const half = ends(t);
+      const isMajor = Math.abs(t % MAJOR) < 1e-6;
+      const lineColour = isMajor ? major : minor;
+      const radius = isMajor ? MAJOR_RADIUS : MINOR_RADIUS;
+      if (Math.abs(t) >= radius) continue;
+      const half = Math.sqrt(radius * radius - t * t);
       for (let s = -half; s < half; s += PIECE) {
         const e = Math.min(half, s + PIECE);
         for (const [x, z] of [[t, s], [t, e], [s, t], [e, t]]) {
           points.push(x, 0.002, z);
-          const fade = smooth(GRID_RADIUS * 0.3, GRID_RADIUS, Math.hypot(x, z));
+          const fade = smooth(radius * 0.3, radius, Math.hypot(x, z));
           c.copy(lineColour).lerp(floorColour, fade).toArray(cols, cols.length);
         }
       }
