@@ -1,7 +1,8 @@
-// The floor: one opaque plane whose fragment shader draws the floor colour, a grid (minor lines
-// every 0.5 m, major every 2 m) and a fade into the background with distance. A shader grid
-// rather than GridHelper lines: long lines that pass behind the camera are clipped wrongly by
-// some software rasterisers (SwiftShader drops them), triangles are not. With a shadow map, a
+// The floor in full quality (light quality has LineGround.ts): one opaque plane whose fragment
+// shader draws the floor colour, a grid (minor lines every 0.5 m, major every 2 m) and a fade
+// into the background with distance, antialiased per pixel. A shader grid rather than
+// GridHelper lines: long lines that pass behind the camera are clipped wrongly by some software
+// rasterisers (SwiftShader drops them), triangles are not. With a shadow map, a
 // ShadowMaterial plane on top darkens where the people's shadows fall.
 import * as THREE from "three";
 
