@@ -60,7 +60,9 @@ def _transformer_rows(numbers: dict) -> list[str]:
 
 
 EVAL_LABELS = {"real": "real test motion", "retrieval": "retrieval (train captures)",
-               "spam": "**SPAM, shipped** (int8 transformers)", "spam_fp32": "SPAM, float transformers",
+               "spam": "**SPAM, shipped** (int8 transformers, planted feet held)",
+               "spam_fp32": "SPAM, float transformers, feet not held",
+               "spam_nolock": "SPAM, shipped, feet not held",
                "spam_nocs": "SPAM without commonsense losses", "spam_vq": "SPAM VQ reconstruction",
                "single_vq": "single-codebook VQ reconstruction"}
 

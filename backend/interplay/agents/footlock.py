@@ -1,4 +1,5 @@
-"""Pin planted feet after a motion has been turned onto a new path (the trajectory editor).
+"""Pin planted feet after a motion has been turned onto a new path (the trajectory editor),
+or where a generator let them slide (`lock_feet`, SPAM's output).
 
 Turning each frame about the pelvis swings a planted foot round it (speed = turn rate × the
 foot's distance from the pelvis). The fix keeps the pelvis on the curve and moves the legs:
@@ -124,7 +125,30 @@ def pin_feet(original: np.ndarray, mapped: np.ndarray, turn: np.ndarray, fps: fl
     `turn` (T,) is the heading change each frame got; bone lengths are the mapped frame's own.
     Where a leg cannot reach (stretched at heel strike or push-off) the whole body first shifts
     a little towards the foot (at most MAX_SHIFT), so feet are not lifted off the ground."""
-    corr = foot_targets(original, mapped, turn, fps, blend)
+    return apply_foot_corrections(mapped, foot_targets(original, mapped, turn, fps, blend))
+
+
+def lock_feet(joints: np.ndarray, fps: float = sk.FPS, blend: int = 4, edge: int = 4
+              ) -> np.ndarray:
+    """Joints (T, 22, 3) whose feet stay where they are at the middle of each stance (a
+    generated motion's sliding planted feet); the correction fades to nothing over `edge`
+    frames at both ends, so consecutive stretches treated one by one still meet exactly."""
+    t = len(joints)
+    plant = stance(joints, fps)
+    corr = np.zeros((t, 2, 3))
+    for leg, (_, _, ankle, _) in enumerate(LEGS):
+        for a, b in runs(plant[:, leg]):
+            m = (a + b - 1) // 2
+            corr[a:b, leg, :2] = joints[m, ankle][[0, 2]] - joints[a:b, ankle][:, [0, 2]]
+        corr[:, leg] = _fill(corr[:, leg], plant[:, leg], blend)
+    ramp = np.minimum(1.0, np.minimum(np.arange(t), np.arange(t)[::-1]) / max(1, edge))
+    return apply_foot_corrections(joints, corr * ramp[:, None, None])
+
+
+def apply_foot_corrections(mapped: np.ndarray, corr: np.ndarray) -> np.ndarray:
+    """Mapped joints with each foot moved rigidly by corr (T, 2, 3: ankle XZ shift, yaw about
+    the ankle) by two-bone IK of the legs (hips fixed after a whole-body shift of at most
+    MAX_SHIFT where a leg cannot reach)."""
     hip, knee, ankle, toe = (list(j) for j in zip(*LEGS))                       # (2,) each
     bone = lambda a, b: np.linalg.norm(mapped[:, a] - mapped[:, b], axis=-1)    # (T, 2)
     thigh, shin, foot = bone(knee, hip), bone(ankle, knee), bone(toe, ankle)

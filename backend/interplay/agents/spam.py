@@ -62,18 +62,23 @@ def part_texts(texts: Texts) -> list[str]:
 
 
 class SpamRuntime:
-    def __init__(self, config: SpamConfig, normalizer, graphs: Mapping, encoder=None):
+    def __init__(self, config: SpamConfig, normalizer, graphs: Mapping, encoder=None,
+                 foot_lock: bool = True):
         self.config, self.normalizer, self.graphs = config, normalizer, graphs
         self._encoder = encoder
+        # Generated planted feet slide (foot skating 0.34 m/s vs 0.08 captured, docs/eval.md):
+        # generation holds them in place with leg IK (`footlock.lock_feet`); edits keep the
+        # input's own legs or re-pose them from tokens as before.
+        self.foot_lock = foot_lock
 
     @classmethod
     def load(cls, weights_dir: str | Path = DEFAULT_DIR, encoder=None, threads: int = 2,
-             precision: str | None = None) -> "SpamRuntime":
+             precision: str | None = None, foot_lock: bool = True) -> "SpamRuntime":
         """Sessions built once; the graphs are run once on a tiny input so a broken export
         fails here (ValueError / FileNotFoundError), not on the first request. precision:
         "fp32" | "int8" transformers (None: what config.json ships)."""
         config, normalizer, graphs = load_files(weights_dir, threads, precision)
-        runtime = cls(config, normalizer, graphs, encoder)
+        runtime = cls(config, normalizer, graphs, encoder, foot_lock)
         runtime.check()
         return runtime
 
@@ -194,7 +199,7 @@ class SpamRuntime:
         pieces = layout([f for _, f in segments], self.config.max_tokens, self.config.downsample)
         rng = np.random.default_rng(seed)
         total = sum(int(f) for _, f in segments)
-        out = Assembler(total)
+        out = Assembler(total, lock=self.foot_lock)
         prev = None
         for piece in pieces:
             texts = segments[piece.segment][0]

@@ -16,6 +16,7 @@ from typing import Iterator
 import numpy as np
 
 from ..motion import features as F
+from .footlock import lock_feet
 
 TRANSITION = 4   # tokens (0.8 s) of blended transition between pieces, at most
 CHUNK = 40       # frames per yielded chunk at most (the generator's streaming unit)
@@ -59,10 +60,11 @@ def layout(frames: list[int], max_tokens: int, downsample: int = 4,
 class Assembler:
     """Turns consecutive feature stretches (n, 239) into joints on the rest skeleton (or
     `offsets`), the first frame at the origin facing +Z, each stretch continuing the root path
-    of the one before; yields (start frame, joints ≤ CHUNK frames) and stops at `total`."""
+    of the one before; yields (start frame, joints ≤ CHUNK frames) and stops at `total`.
+    lock: planted feet are held in place (`footlock.lock_feet`) stretch by stretch."""
 
-    def __init__(self, total: int, offsets: np.ndarray | None = None):
-        self.total, self.offsets = int(total), offsets
+    def __init__(self, total: int, offsets: np.ndarray | None = None, lock: bool = False):
+        self.total, self.offsets, self.lock = int(total), offsets, lock
         self.done = 0
         self._last: tuple[np.ndarray, np.ndarray] | None = None   # (features row, (x, z, heading))
 
@@ -84,6 +86,8 @@ class Assembler:
         theta = start[2] + rows[:-1, F.SLICES["root_angvel"]].sum()
         end = joints[-1, 0]
         self._last = (rows[-1], np.array([end[0], end[2], theta]))
+        if self.lock:      # planted feet held (corrections fade out at the stretch's ends)
+            joints = lock_feet(joints)
         joints = joints[skip:skip + take]
         for a in range(0, take, CHUNK):
             yield self.done + a, joints[a:a + CHUNK]

@@ -5,6 +5,7 @@
              cannot return a test capture
   spam       SPAM (`agents.spam.SpamRuntime`), models/weights/spam, as shipped (int8 transformers)
   spam_fp32  the same weights with the float transformers (what the int8 graphs quantize)
+  spam_nolock  the shipped SPAM without holding planted feet (`footlock.lock_feet`)
   spam_nocs  SPAM trained without the commonsense losses, models/weights/spam_nocs
   spam_vq    reconstruction: test motions encoded and decoded by SPAM's part RVQ-VAE
   single_vq  reconstruction: the same through the single-codebook (whole-body) VQ ablation
@@ -25,7 +26,8 @@ from ..motion.kinematics import fit_offsets
 from ..motion.skeleton import FPS
 
 WEIGHTS = Path(__file__).resolve().parents[3] / "models" / "weights"
-ROW_NAMES = ("real", "retrieval", "spam", "spam_fp32", "spam_nocs", "spam_vq", "single_vq")
+ROW_NAMES = ("real", "retrieval", "spam", "spam_fp32", "spam_nolock", "spam_nocs", "spam_vq",
+             "single_vq")
 # Directories the single-codebook ablation may be exported to (first found wins).
 SINGLE_VQ_DIRS = ("spam_single", "single_vq", "vq_single")
 
@@ -73,7 +75,8 @@ def _retrieval(clips) -> Row:
     return Row("retrieval", "generated", generate=generate, source="train-split captures")
 
 
-def _spam(name: str, weights: Path, precision: str | None = None, sampling=None) -> Row:
+def _spam(name: str, weights: Path, precision: str | None = None, sampling=None,
+          foot_lock: bool = True) -> Row:
     """SPAM's runtime; `sampling` overrides generation/edit settings (cfg, steps, temperature,
     and for edits mode) — for `interplay eval --split val --sampling …`."""
     sampling = dict(sampling or {})
@@ -81,7 +84,7 @@ def _spam(name: str, weights: Path, precision: str | None = None, sampling=None)
     _trained(weights)
     from ..agents.spam import SpamRuntime
     try:
-        rt = SpamRuntime.load(weights, threads=1, precision=precision)
+        rt = SpamRuntime.load(weights, threads=1, precision=precision, foot_lock=foot_lock)
     except FileNotFoundError as exc:
         raise Skip(str(exc)) from None
 
@@ -131,6 +134,8 @@ def load_row(name: str, clips, sampling: dict | None = None) -> Row:
         return _spam(name, WEIGHTS / name, sampling=sampling)
     if name == "spam_fp32":
         return _spam(name, WEIGHTS / "spam", precision="fp32", sampling=sampling)
+    if name == "spam_nolock":
+        return _spam(name, WEIGHTS / "spam", sampling=sampling, foot_lock=False)
     if name == "spam_vq":
         return _vq(name, WEIGHTS / "spam")
     if name == "single_vq":
