@@ -38,7 +38,7 @@ OPSET = 17
 # strength (metres of step per unit penetration gradient), safe distance (m), reprojection
 # weight γ on the predicted initial point, stochastic strength η.
 SAMPLING = {"steps": 5, "guidance": 0.3, "safe_distance": 0.06, "gamma": 0.5, "eta": 0.0,
-            "guidance_iters": 3, "rigid": 0.3}
+            "guidance_iters": 2, "rigid": 0.6}
 
 
 def load(ckpt_dir: Path) -> ARFlow:

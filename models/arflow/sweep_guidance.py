@@ -2,7 +2,7 @@
 no-guidance and guidance (γ = 1) rows for each setting of a small grid, with the ratios the
 issue's target is stated in (IF and IV against no guidance, FID rise), per set.
 
-    .venv/bin/python -m models.arflow.sweep_guidance [--repeats 2] [--first N] > var/arflow/sweep_val.json
+    .venv/bin/python -m models.arflow.sweep_guidance [--repeats 2] [--first N | --only I,J] > var/arflow/sweep_val.json
 """
 
 from __future__ import annotations
@@ -27,11 +27,13 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeats", type=int, default=2)
     ap.add_argument("--first", type=int, default=0, help="start at this grid entry")
+    ap.add_argument("--only", help="comma-separated grid entries to run (e.g. 0,1,10)")
     args = ap.parse_args(argv)
+    picks = ([GRID[int(i)] for i in args.only.split(",")] if args.only else GRID[args.first:])
     model = get_reaction_model()
     base = run_eval_react(("no_guidance",), repeats=args.repeats, model=model, split="val")
     out = []
-    for w, safe, rigid, iters in GRID[args.first:]:
+    for w, safe, rigid, iters in picks:
         cfg = replace(model.sampling, guidance=w, safe_distance=safe, rigid=rigid,
                       guidance_iters=iters)
         rep = run_eval_react(("guidance",), repeats=args.repeats, model=model, sampling=cfg,
@@ -42,6 +44,8 @@ def main(argv: list[str] | None = None) -> int:
             row[name] = {"if_ratio": round(g["if"] / b["if"], 3),
                          "iv_ratio": round(g["iv_cm3"] / b["iv_cm3"], 4),
                          "fid_rise": round(g["fid"] / b["fid"] - 1, 3), "if": round(g["if"], 4),
+                         "fid_stats_rise": round(g["fid_stats"] / b["fid_stats"] - 1, 3),
+                         "foot_skating": round(g["foot_skating"], 3),
                          "fid": round(g["fid"], 4), "contact_frames": round(g["contact_frames"], 2)}
             if "per_kind" in g:
                 row[name]["if_per_kind"] = {k: round(v["if"], 3) for k, v in g["per_kind"].items()}

@@ -46,8 +46,8 @@ class SamplingConfig:
     steps: int = 5
     guidance: float = 0.3         # w: metres per unit penetration gradient (0 = off)
     safe_distance: float = 0.06   # δ (m): gaps beyond it give no gradient
-    guidance_iters: int = 3       # gradient steps per sampling step
-    rigid: float = 0.3            # weight of the whole-body (translation) gradient
+    guidance_iters: int = 2       # gradient steps per sampling step
+    rigid: float = 0.6            # weight of the whole-body (translation) gradient
     gamma: float = 0.5            # reprojection weight on the predicted start x̂₀
     eta: float = 0.0              # stochastic strength (diversity)
 
