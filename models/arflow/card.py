@@ -79,7 +79,12 @@ def write_card(weights: Path, ckpt_dir: Path) -> Path:
               "Trained on 11 captured pairs of one activity (salsa) plus composed pairs: "
               "reactions outside these are not expected to be good. Joints, not rotations, are "
               "generated; bones are restored by IK → FK (offline) or per-frame bone-length "
-              "projection (online)."]
+              "projection (online). Guidance lowers the pair evaluator's FID but can raise the "
+              "statistics FID (it did on the test pairs at the shipped defaults), takes hand "
+              "contacts away (the safe distance applies to hands) and raises foot skating (the "
+              "whole-body term slides the reactor; nothing pins its feet): read the FID with the "
+              "contact and skating columns (docs/reaction.md). The defaults were chosen on the "
+              "validation split (`python -m models.arflow.sweep_guidance`)."]
     out = Path(weights) / "MODEL_CARD.md"
     out.write_text("\n".join(lines) + "\n")
     return out
