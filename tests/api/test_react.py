@@ -51,3 +51,31 @@ def test_react_needs_a_stored_actor(fake_client):
     assert r.status_code == 404
     r = fake_client.post("/api/jobs", json={"prompt": "react", "mode": "react"})
     assert r.status_code == 422 and "actor_motion_id" in r.json()["detail"]
+
+
+def test_react_intent_is_optional_and_generate_still_needs_a_prompt(fake_client):
+    """The intent of a react job is optional (the reactor follows the actor unprompted, the
+    model was trained with text dropout); a generate job without a prompt is a readable 422."""
+    actor_job, events = run_job(fake_client, prompt="a person walks", persons=1, seconds=1,
+                                seed=3)
+    assert events[-1]["type"] == "done"
+    r = fake_client.post("/api/jobs", json={"mode": "react",
+                                            "actor_motion_id": actor_job["motion_id"]})
+    assert r.status_code == 201, r.text
+    r = fake_client.post("/api/jobs", json={"persons": 1, "seconds": 2})
+    assert r.status_code == 422 and "prompt" in r.json()["detail"], r.text
+    r = fake_client.post("/api/jobs", json={"mode": "react", "prompt": "   ",
+                                            "actor_motion_id": actor_job["motion_id"]})
+    assert r.status_code == 422 and "prompt" in r.json()["detail"], r.text
+
+
+@needs_weights
+def test_react_job_without_an_intent_stores_the_pair(fake_client):
+    actor_job, _ = run_job(fake_client, prompt="a person walks", persons=1, seconds=1, seed=3)
+    job, events = run_job(fake_client, mode="react", actor_motion_id=actor_job["motion_id"],
+                          seed=2)
+    assert events[-1]["type"] == "done", events[-1]
+    assert events[0]["plan"]["prompt"] is None
+    stored = fake_client.get(f"/api/motions/{job['motion_id']}").json()
+    assert stored["persons"] == 2 and stored["parent_id"] == actor_job["motion_id"]
+    assert stored["edit"]["mode"] == "react" and stored["edit"]["prompt"] is None

@@ -34,7 +34,7 @@ MAX_FINISHED = 64   # finished jobs kept for replay at most
 
 @dataclass(frozen=True)
 class JobSpec:
-    prompt: str
+    prompt: str | None                                          # None: a react job's no intent
     persons: int
     seconds: float
     seed: int

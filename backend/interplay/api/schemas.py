@@ -64,7 +64,10 @@ class JobCreate(BaseModel):
     model_config = ConfigDict(json_schema_extra={
         "examples": [{"prompt": "two people dance salsa", "persons": 2, "seconds": 6, "seed": 7}]})
 
-    prompt: str = Field(description=f"What the people do, 1–{MAX_PROMPT} characters.")
+    prompt: str | None = Field(default=None, description=f"What the people do, 1–{MAX_PROMPT} "
+                               "characters (required to generate; in react mode the optional "
+                               "intent, e.g. \"shake hands\": without one the reactor "
+                               "follows the actor unprompted).")
     persons: Literal[1, 2] = Field(default=1, description="How many people: 1 or 2.")
     seconds: float = Field(default=6.0, ge=MIN_SECONDS, le=MAX_SECONDS, allow_inf_nan=False,
                            description=f"Length in seconds, {MIN_SECONDS:g}–{MAX_SECONDS:g}.")
@@ -81,6 +84,8 @@ class JobCreate(BaseModel):
     def _modes(self):
         if self.mode == "react" and not self.actor_motion_id:
             raise ValueError("mode react needs actor_motion_id")
+        if self.mode == "generate" and self.prompt is None:
+            raise ValueError("prompt: give what the people do")
         if self.mode == "generate" and self.actor_motion_id:
             raise ValueError("actor_motion_id is for mode react")
         if self.trajectory is not None and self.trajectory.person >= self.persons:
@@ -90,7 +95,9 @@ class JobCreate(BaseModel):
 
     @field_validator("prompt")
     @classmethod
-    def _prompt(cls, v: str) -> str:
+    def _prompt(cls, v: str | None) -> str | None:
+        if v is None:
+            return None
         v = " ".join(v.split())
         if not v:
             raise ValueError("must not be empty")
