@@ -58,8 +58,8 @@ def test_long_motions_go_window_by_window_with_reencoded_context(rt, monkeypatch
     encode = rt.encode
     monkeypatch.setattr(rt, "encode", lambda pair: calls.append(pair) or encode(pair))
     # 20 tokens per window (the tiny export: max_tokens 20), 5 of context: 90 frames. The first
-    # window keeps 19 tokens (76 frames; its last token, the decoder's edge, is re-made), the
-    # second sees frames 56–76 as context and makes the last 14 frames
+    # window keeps 18 tokens (72 frames: its first and last tokens, the decoder's edges, are
+    # dropped), the second sees frames 52–72 as context and makes the last 18 frames
     out = rt.generate("two people walk side by side", 4.5, seed=1)
     assert out.shape == (2, 90, 22, 3)
     assert [c.shape for c in calls] == [(2, coda_mod.CONTEXT * 4, 22, 3)]
@@ -68,8 +68,8 @@ def test_long_motions_go_window_by_window_with_reencoded_context(rt, monkeypatch
     first = calls[0][0, 0]
     assert np.allclose(first[sk.PELVIS, [0, 2]], 0.0, atol=1e-9)
     assert abs(float(facing_angle(first))) < 1e-6
-    # and it is the motion's own frames 56–76 moved rigidly (same pairwise distances)
-    ctx = out[:, 56:76]
+    # and it is the motion's own frames 52–72 moved rigidly (same pairwise distances)
+    ctx = out[:, 52:72]
     assert np.allclose(np.linalg.norm(calls[0][0] - calls[0][1], axis=-1),
                        np.linalg.norm(ctx[0] - ctx[1], axis=-1), atol=1e-6)
     long = rt.generate("two people walk side by side", 20.0, seed=2)

@@ -21,9 +21,12 @@ length the transformer was trained at): the last `CONTEXT` tokens'
 frames of what is already made are moved into their own canonical frame and re-encoded
 (`encode`), kept fixed as context, and the rest of the window is decoded after them, so each
 window continues the motion (and a new segment its predecessor's tail) under its own text.
-Decoded frames are moved back to the world, the seam offset to the previous frame is faded out
-over `SEAM` frames, bones are put back on fixed lengths (`kinematics.fit_to_skeleton`, each
-person's offsets fitted once on the first window) and the floor is put at y = 0.
+The decoder's edge tokens are dropped: one before the motion's first kept frame and one after
+each window's last kept frame (the next window re-makes those frames with context). Decoded
+frames are moved back to the world; at a seam each person's ground offset to the frame before
+moves the whole new window and the rest of the difference fades out over `SEAM` frames; bones
+are put back on fixed lengths (`kinematics.fit_to_skeleton`, each person's offsets fitted once
+on the first window) and the floor is put at y = 0.
 """
 
 from __future__ import annotations
@@ -165,20 +168,28 @@ class CodaRuntime:
                     ctx_codes = self.encode(past @ rot.T + shift)
                 else:
                     rot, shift, ctx_codes = np.eye(3), np.zeros(3), np.zeros((2, 0), np.int64)
-                new = min(-(-left // ds), c.window_tokens - ctx)
+                # Edge tokens: the decoder's first and last frames of a window are its worst,
+                # so the motion's first window makes one token before the kept frames, and
+                # every window one after them; both are dropped (a later window re-makes the
+                # frames after a dropped last token with context).
+                lead = 0 if ctx else 1
+                new = min(-(-left // ds) + lead + 1, c.window_tokens - ctx)
                 codes = np.concatenate([ctx_codes, np.zeros((2, new), np.int64)], axis=1)
                 editable = np.zeros(codes.shape, bool)
                 editable[:, ctx:] = True
                 codes = self.fill(codes, editable, emb, rng, **sampling)
                 world = (self.decode(codes) - shift) @ rot          # rot is orthonormal
-                # A window with more of its segment to come drops its last token's frames
-                # (the decoder's edge), which the next window re-makes with context.
-                keep = min(left, new * ds) if new * ds >= left else (new - 1) * ds
-                out = world[:, ctx * ds:ctx * ds + keep]
+                keep = min(left, (new - lead - 1) * ds)
+                out = world[:, (ctx + lead) * ds:(ctx + lead) * ds + keep]
                 if ctx:
                     fade = np.clip(1.0 - np.arange(1, keep + 1) / (SEAM + 1), 0.0, None)
                     jump = hist[:, -1] - world[:, ctx * ds - 1]                 # (2, 22, 3)
-                    out = out + jump[:, None] * fade[None, :, None, None]
+                    # Where each person stands drifts in the decoded context (the window's
+                    # absolute positions): that ground offset moves the whole new window, so
+                    # its velocities are kept; the rest of the difference (pose) fades out.
+                    ground = jump[:, sk.PELVIS] * np.array([1.0, 0.0, 1.0])       # (2, 3)
+                    out = (out + ground[:, None, None]
+                           + (jump - ground[:, None])[:, None] * fade[None, :, None, None])
                 if offsets is None:
                     offsets = [fit_offsets(p) for p in out]
                 out = np.stack([fit_to_skeleton(p, o)[0] for p, o in zip(out, offsets)])
