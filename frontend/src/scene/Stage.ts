@@ -25,6 +25,8 @@ export class Stage {
   private mannequins: Mannequin[] = [];
   /** Per person: the joints of a pose blended between two frames (reused, no allocation). */
   private readonly blended: Float32Array[] = [];
+  private highlights: { frame: number; version: number; buffer: FrameBuffer | null; sets: [Set<number>, Set<number>][] } =
+    { frame: -1, version: -1, buffer: null, sets: [] };
   private readonly centre = new THREE.Vector3();
   private readonly centreNext = new THREE.Vector3();
   private readonly delta = new THREE.Vector3();
@@ -187,14 +189,23 @@ export class Stage {
         for (let i = 0; i < joints.length; i++) out[i] = joints[i] + (b[i] - joints[i]) * weight;
         joints = out;
       }
-      m.setPose(
-        joints,
-        contactJoints(buffer.contacts[t], p),
-        penetratingBones(skeleton, buffer.penetration[t], p),
-      );
+      m.setPose(joints, ...this.highlightsAt(skeleton, buffer, t, p));
     });
     this.follow(buffer, t, next, weight);
     this.dirty = true;
+  }
+
+  /** Person p's contact joints and penetrating bones at frame t, made once per frame (and
+   * buffer version), not at every refresh that blends towards the next frame. */
+  private highlightsAt(skeleton: Skeleton, buffer: FrameBuffer, t: number, p: number): [Set<number>, Set<number>] {
+    const h = this.highlights;
+    if (h.frame !== t || h.version !== buffer.version || h.buffer !== buffer) {
+      this.highlights = { frame: t, version: buffer.version, buffer, sets: [] };
+    }
+    return (this.highlights.sets[p] ??= [
+      contactJoints(buffer.contacts[t], p),
+      penetratingBones(skeleton, buffer.penetration[t], p),
+    ]);
   }
 
   /** Render if anything changed; true when a frame was drawn. */
