@@ -1,10 +1,10 @@
 // The mesh of one mannequin: every bone's cylinder and every joint's sphere merged into one
-// geometry whose vertices the CPU places each pose (a few thousand, well under a millisecond).
-// One draw call per person: a software rasteriser (SwiftShader) pays a fixed cost per draw and
-// runs an instanced draw as one draw per instance, so merging is what makes the bodies cheap
-// there; a GPU does not mind either way. Per vertex: position, normal, colour (its piece's
-// colour: part, highlight) and glow (bodyMaterial.ts); `joint` tells picking which joint (a bone:
-// its child joint) a hit vertex stands for.
+// geometry whose vertices the CPU places each pose (~1,800, well under a millisecond). One draw
+// call per person (43 meshes before). In SwiftShader it measured the same as two InstancedMeshes
+// per person (its cost there is per vertex, docs/studio.md), and picking reads the joint straight
+// off the hit triangle (no per-instance bounds to refresh). Per vertex: position, normal, colour
+// (its piece's colour: part, highlight) and glow (bodyMaterial.ts); `vertexJoint` tells picking
+// which joint (a bone: its child joint) a hit vertex stands for.
 import * as THREE from "three";
 import { standardGlowMaterial, vertexLitMaterial } from "./bodyMaterial";
 import type { QualitySettings } from "./quality";
