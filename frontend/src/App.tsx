@@ -5,6 +5,7 @@ import { ErrorBanner } from "./ui/ErrorBanner";
 import { Legend } from "./ui/Legend";
 import { MetricsPanel } from "./ui/MetricsPanel";
 import { PlanPanel } from "./ui/PlanPanel";
+import { ReactorPanel } from "./ui/ReactorPanel";
 import { Progress } from "./ui/Progress";
 import { PromptBar } from "./ui/PromptBar";
 import { ShareExport } from "./ui/ShareExport";
@@ -47,6 +48,7 @@ export function App() {
           <Legend />
         </div>
         <aside className="sidebar">
+          <ReactorPanel />
           <PathPanel />
           <PlanPanel />
           <MetricsPanel />

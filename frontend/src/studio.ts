@@ -5,10 +5,14 @@ import { ApiError, cancelJob, createJob, getHistory, getMotion, getSkeleton, mot
 import { openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
 import { agentFromReview } from "./api/agent";
 import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
-import { fromHistory, moveTo } from "./directing/versions";
+import { reactRequest } from "./directing/react";
+import { fromHistory, moveTo, pushVersion } from "./directing/versions";
 import { FPS, frames, playhead, useStudio } from "./store";
 
 let stream: StreamHandle | null = null;
+/** A react job keeps the actor on stage until its first frames arrive; then the buffer is
+ * reset to this many people (so the stage never goes blank between the two). */
+let pendingPersons: number | null = null;
 
 export function message(err: unknown): string {
   if (err instanceof ApiError || err instanceof Error) return err.message;
@@ -29,6 +33,12 @@ export function showInUrl(id: string, mode: "push" | "replace" = "push"): void {
 
 function handleEvent(ev: StreamEvent): void {
   try {
+    if (ev.type === "frames" && pendingPersons !== null) {
+      frames.reset(pendingPersons);
+      pendingPersons = null;
+      playhead.pos = 0;
+      useStudio.setState({ frame: 0, playing: true });
+    }
     if (ev.type === "frames") frames.setFrames(ev.start, ev.people, ev.total);
     else if (ev.type === "highlights") frames.setHighlights(ev);
   } catch (err) {
@@ -36,6 +46,11 @@ function handleEvent(ev: StreamEvent): void {
     stream?.close();
   }
   useStudio.setState((s) => ({ stream: reduceStream(s.stream, ev) }));
+  const { mode, actorId, plan } = useStudio.getState().stream;
+  if (mode === "react") {
+    handleReactEnd(ev, actorId ?? null, (plan?.prompt as string | null | undefined) ?? null);
+    return;
+  }
   if (ev.type === "error") {
     useStudio.setState({ error: ev.cancelled ? null : ev.message });
     // cancelled: back to an empty, idle stage (the partial frames are not a motion)
@@ -52,6 +67,28 @@ function handleEvent(ev: StreamEvent): void {
   }
 }
 
+/** The end of a react job: done → the stored pair is the next version after the actor (undo
+ * goes back to it); cancelled → back to the actor, as it was; failed → the actor, and the error. */
+function handleReactEnd(ev: StreamEvent, actorId: string | null, intent: string | null): void {
+  if (ev.type !== "done" && ev.type !== "error") return;
+  stream = null;
+  pendingPersons = null;
+  if (ev.type === "done") {
+    useStudio.setState((s) => ({
+      motionId: ev.motion_id,
+      motionPersons: 2,
+      persons: 2,
+      edit: { mode: "react", prompt: intent, part: null, frames: null, trajectory: null },
+      versions: pushVersion(s.versions, ev.motion_id),
+    }));
+    showInUrl(ev.motion_id);
+    return;
+  }
+  const error = ev.cancelled ? null : ev.message;
+  if (actorId) void openMotion(actorId).then(() => useStudio.setState({ error }));
+  else useStudio.setState({ error });
+}
+
 /** The drawn (or preset) path to send with a job, when there is one. */
 export function currentTrajectory(): Trajectory | undefined {
   const { path, persons } = useStudio.getState();
@@ -65,6 +102,7 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
   const { prompt, persons, seconds } = useStudio.getState();
   stream?.close();
   stream = null;
+  pendingPersons = null;
   useStudio.setState({ error: null, selected: null, range: null, edit: null });
   const req: JobRequest = { prompt, persons, seconds, ...override };
   const trajectory = override.trajectory ?? currentTrajectory();
@@ -85,6 +123,27 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
     frame: 0,
     playing: true,
   });
+  stream = openStream(job.stream, handleEvent);
+}
+
+/** Add a reactor (person B, generated frame by frame) to the current one-person motion, with an
+ * optional intent. The actor stays on stage until the pair's first frames arrive; the pair
+ * then grows as it streams, and ends as a new version whose parent is the actor. */
+export async function react(intent: string): Promise<void> {
+  const { motionId, motionPersons } = useStudio.getState();
+  if (!motionId || motionPersons !== 1) return;
+  stream?.close();
+  stream = null;
+  useStudio.setState({ error: null, selected: null, range: null });
+  let job;
+  try {
+    job = await createJob(reactRequest(motionId, intent));
+  } catch (err) {
+    fail(err);
+    return;
+  }
+  pendingPersons = 2;
+  useStudio.setState({ stream: startStream(null, job.job_id, "react", motionId) });
   stream = openStream(job.stream, handleEvent);
 }
 
@@ -133,6 +192,7 @@ export function showMotion(motion: Motion): void {
 export async function openMotion(id: string): Promise<void> {
   stream?.close();
   stream = null;
+  pendingPersons = null;
   try {
     const motion = await getMotion(id);
     showMotion(motion);

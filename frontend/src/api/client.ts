@@ -1,6 +1,6 @@
 // Typed REST client for the studio API. Every non-2xx answer becomes an ApiError
 // carrying the server's readable `detail` message.
-import type { EditRequest, ExportFormat, JobCreated, JobRequest, Motion, Skeleton, Version } from "./types";
+import type { EditRequest, ExportFormat, JobCreated, JobRequest, Motion, ReactRequest, Skeleton, Version } from "./types";
 
 export class ApiError extends Error {
   constructor(
@@ -46,7 +46,7 @@ async function request<T>(path: string, init?: RequestInit): Promise<T> {
   return body as T;
 }
 
-export function createJob(req: JobRequest): Promise<JobCreated> {
+export function createJob(req: JobRequest | ReactRequest): Promise<JobCreated> {
   return request<JobCreated>("/api/jobs", {
     method: "POST",
     headers: { "Content-Type": "application/json" },

@@ -4,6 +4,8 @@ import { initialAgent, reduceAgent, type AgentState } from "./agent";
 import type { Metrics, Plan, StreamEvent } from "./types";
 
 export type StreamPhase = "idle" | "connecting" | "generating" | "done" | "error";
+/** generate: a new motion from the prompt; react: a reactor streamed next to a stored actor. */
+export type StreamMode = "generate" | "react";
 
 export interface StreamState {
   phase: StreamPhase;
@@ -20,6 +22,9 @@ export interface StreamState {
   /** The job being streamed (to cancel it). */
   jobId?: string | null;
   cancelled?: boolean;
+  mode?: StreamMode;
+  /** react: the stored motion whose person 0 is the actor (the new version's parent). */
+  actorId?: string | null;
 }
 
 export const initialStream: StreamState = {
@@ -33,10 +38,17 @@ export const initialStream: StreamState = {
   agent: initialAgent,
   jobId: null,
   cancelled: false,
+  mode: "generate",
+  actorId: null,
 };
 
-export function startStream(motionId: string | null = null, jobId: string | null = null): StreamState {
-  return { ...initialStream, phase: "connecting", motionId, jobId };
+export function startStream(
+  motionId: string | null = null,
+  jobId: string | null = null,
+  mode: StreamMode = "generate",
+  actorId: string | null = null,
+): StreamState {
+  return { ...initialStream, phase: "connecting", motionId, jobId, mode, actorId };
 }
 
 /** Next state after one event. Events after `done` or `error` are ignored; frames and

@@ -18,6 +18,15 @@ export interface JobRequest {
   trajectory?: Trajectory;
 }
 
+/** A react job: a reactor (person 1, ARFlow, frame by frame) for a stored motion's person 0,
+ * with an optional intent ("shake hands"); stored as a new two-person version. */
+export interface ReactRequest {
+  mode: "react";
+  actor_motion_id: string;
+  prompt?: string;
+  seed?: number;
+}
+
 /** Body parts the edit endpoint takes (aliases of CoMA's four parts, or the whole body). */
 export type EditPart = "left_arm" | "right_arm" | "left_leg" | "right_leg" | "whole_body";
 
@@ -35,6 +44,8 @@ export interface EditInfo {
   prompt?: string | null;
   frames?: [number, number] | null;
   trajectory?: Trajectory | null;
+  /** "react" for a reactor added to the parent's person. */
+  mode?: string | null;
 }
 
 export interface Version {

@@ -1,10 +1,12 @@
 import { useShallow } from "zustand/react/shallow";
 import { useStudio } from "../store";
 import type { EditInfo } from "../api/types";
+import { describeReaction } from "../directing/react";
 import { SegmentCard } from "./SegmentCard";
 
 /** "left_arm: wave · frames 10–51" or "path (person A)". */
 export function describeEdit(e: EditInfo): string {
+  if (e.mode === "react") return describeReaction(e.prompt);
   const parts = [
     e.prompt ? `${e.part ?? "whole_body"}: ${e.prompt}` : null,
     e.frames ? `frames ${e.frames[0]}–${e.frames[1]}` : null,

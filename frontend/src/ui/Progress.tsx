@@ -4,7 +4,7 @@ import { useStudio } from "../store";
 /** Generation progress: frames received / total while the stream runs (with Cancel), or the
  * edit being applied. */
 export function Progress() {
-  const { phase, received, total } = useStudio((s) => s.stream);
+  const { phase, received, total, mode } = useStudio((s) => s.stream);
   const editing = useStudio((s) => s.editing);
   if (editing) {
     return (
@@ -18,7 +18,13 @@ export function Progress() {
   }
   if (phase !== "connecting" && phase !== "generating") return null;
   const fraction = total > 0 ? received / total : 0;
-  const label = total > 0 ? `Generating · ${received} / ${total} frames` : "Planning…";
+  const react = mode === "react";
+  const label =
+    total > 0
+      ? `${react ? "B reacting" : "Generating"} · ${received} / ${total} frames`
+      : react
+        ? "Starting the reactor…"
+        : "Planning…";
   return (
     <div className="progress" data-testid="progress" role="status" aria-live="polite">
       <div className="progress__label">
