@@ -50,6 +50,32 @@ def export_onnx(model: Evaluator, path: Path) -> None:
                                     "mask": {0: "batch", 1: "frames"}, "embedding": {0: "batch"}})
 
 
+def save_text_proj(model: Evaluator, path: Path) -> None:
+    """The text MLP as numpy arrays (the runtime replays it without onnxruntime)."""
+    t = model.text
+    np.savez(path, fc1_w=t.fc1.weight.detach().numpy().T, fc1_b=t.fc1.bias.detach().numpy(),
+             fc2_w=t.fc2.weight.detach().numpy().T, fc2_b=t.fc2.bias.detach().numpy())
+
+
+def export_cli(argv, description: str, default_ckpt: Path, default_out: Path, export_fn,
+               load_fn, runtime_cls) -> tuple:
+    """The export command of an evaluator (this one and the pair evaluator): flags --ckpt,
+    --out, --data-dir, --no-card; writes the runtime files, loads them back and checks ONNX
+    against torch. Returns (args, checkpoint, torch model, runtime, max |Δ|)."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--ckpt", default=str(default_ckpt))
+    ap.add_argument("--out", default=str(default_out))
+    ap.add_argument("--data-dir", default=str(DATA_DIR))
+    ap.add_argument("--no-card", action="store_true", help="skip the measurements and card")
+    args = ap.parse_args(argv)
+    ckpt = export_fn(args.ckpt, args.out)
+    model, _ = load_fn(args.ckpt)
+    runtime = runtime_cls.load(args.out)
+    err = onnx_matches_torch(model, runtime)
+    print(f"wrote {args.out}; ONNX vs torch max |Δ| = {err:.2e}")
+    return args, ckpt, model, runtime, err
+
+
 def export(ckpt_path: str | Path, out: str | Path) -> dict:
     """Write the runtime files into `out`; returns the checkpoint (for the card)."""
     model, ckpt = load_checkpoint(ckpt_path)
@@ -57,10 +83,7 @@ def export(ckpt_path: str | Path, out: str | Path) -> dict:
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     export_onnx(model, out / "motion_encoder.onnx")
-    t = model.text
-    np.savez(out / "text_proj.npz", fc1_w=t.fc1.weight.detach().numpy().T,
-             fc1_b=t.fc1.bias.detach().numpy(), fc2_w=t.fc2.weight.detach().numpy().T,
-             fc2_b=t.fc2.bias.detach().numpy())
+    save_text_proj(model, out / "text_proj.npz")
     n = ckpt["normalizer"]
     Normalizer(np.asarray(n["mean"]), np.asarray(n["std"]),
                {k: v for k, v in n.items() if k not in ("mean", "std")}).save(out / "normalizer.npz")
@@ -162,17 +185,9 @@ R-precision here measures recognising the action family more than fine wording.
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ckpt", default=str(DEFAULT_OUT / "evaluator.pt"))
-    ap.add_argument("--out", default=str(WEIGHTS))
-    ap.add_argument("--data-dir", default=str(DATA_DIR))
-    ap.add_argument("--no-card", action="store_true", help="skip the retrieval numbers and card")
-    args = ap.parse_args(argv)
-    ckpt = export(args.ckpt, args.out)
-    model, _ = load_checkpoint(args.ckpt)
-    runtime = Runtime.load(args.out)
-    err = onnx_matches_torch(model, runtime)
-    print(f"wrote {args.out}; ONNX vs torch max |Δ| = {err:.2e}")
+    args, ckpt, model, runtime, err = export_cli(
+        argv, __doc__.split("\n")[0], DEFAULT_OUT / "evaluator.pt", WEIGHTS, export,
+        load_checkpoint, Runtime)
     if not args.no_card:
         table = retrieval_table(runtime, default_clips(args.data_dir))
         params = sum(p.numel() for p in model.parameters())

@@ -11,7 +11,6 @@ test splits, and FID of real and broken pairs against the train split's real pai
 
 from __future__ import annotations
 
-import argparse
 import json
 from pathlib import Path
 
@@ -19,8 +18,8 @@ import numpy as np
 import torch
 
 from interplay.agents.pair_evaluator import PairEvaluator, fid
-from interplay.motion.clip import DATA_DIR, default_clips
-from models.evaluator.export import export_onnx, onnx_matches_torch
+from interplay.motion.clip import default_clips
+from models.evaluator.export import export_cli, export_onnx, save_text_proj
 from models.evaluator.model import Evaluator
 
 from .card import model_card
@@ -47,10 +46,7 @@ def export(ckpt_path: str | Path, out: str | Path) -> dict:
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     export_onnx(model, out / "motion_encoder.onnx")
-    t = model.text
-    np.savez(out / "text_proj.npz", fc1_w=t.fc1.weight.detach().numpy().T,
-             fc1_b=t.fc1.bias.detach().numpy(), fc2_w=t.fc2.weight.detach().numpy().T,
-             fc2_b=t.fc2.bias.detach().numpy())
+    save_text_proj(model, out / "text_proj.npz")
     np.savez(out / "normalizer.npz", mean=np.asarray(ckpt["normalizer"]["mean"], np.float32),
              std=np.asarray(ckpt["normalizer"]["std"], np.float32))
     (out / "config.json").write_text(json.dumps({
@@ -115,17 +111,9 @@ _NO_NORM = (np.zeros(1, np.float32), np.ones(1, np.float32))
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ckpt", default=str(DEFAULT_OUT / "pair_evaluator.pt"))
-    ap.add_argument("--out", default=str(WEIGHTS))
-    ap.add_argument("--data-dir", default=str(DATA_DIR))
-    ap.add_argument("--no-card", action="store_true", help="skip the measurements and card")
-    args = ap.parse_args(argv)
-    ckpt = export(args.ckpt, args.out)
-    model, _ = load_checkpoint(args.ckpt)
-    ev = PairEvaluator.load(args.out)
-    err = onnx_matches_torch(model, ev)
-    print(f"wrote {args.out}; ONNX vs torch max |Δ| = {err:.2e}")
+    args, ckpt, model, ev, err = export_cli(
+        argv, __doc__.split("\n")[0], DEFAULT_OUT / "pair_evaluator.pt", WEIGHTS, export,
+        load_checkpoint, PairEvaluator)
     if not args.no_card:
         clips = default_clips(args.data_dir)
         metrics = {"onnx_error": err,
