@@ -21,7 +21,7 @@ from models.coda.sample import sample_codes  # noqa: E402
 from models.coda.train import (Joints, cvq_loss, encode_pairs, evaluate_cmt,  # noqa: E402
                                train_cmt, train_cvq)
 
-TINY = CVQConfig(codes=32, interaction_codes=16, latent=16, width=16, depth=1, heads=2)
+TINY = CVQConfig(codes=32, interaction_codes=16, latent=32, width=32, depth=1, heads=2)
 TINY_CMT = CMTConfig(codes=32, d=32, heads=2, blocks=1, ff=2, dropout=0.0, max_tokens=8)
 
 
@@ -30,6 +30,15 @@ class ConstEncoder:
 
     def encode(self, texts):
         return np.stack([np.full(384, len(t) / 100.0, np.float32) for t in texts])
+
+
+@pytest.fixture(scope="module", autouse=True)
+def one_thread():
+    """One torch thread: tiny ops gain nothing from two, and lose a lot on a busy CPU."""
+    before = torch.get_num_threads()
+    torch.set_num_threads(1)
+    yield
+    torch.set_num_threads(before)
 
 
 @pytest.fixture(scope="module")
@@ -41,16 +50,16 @@ def data():
 
 
 @torch.no_grad()
-def _eval_loss(model, joints, d) -> float:
+def _eval_terms(model, joints, d) -> dict[str, float]:
     model.eval()
-    return cvq_loss(model, LossConfig(), joints, d.a[:64], d.b[:64])[1]["loss"]
+    return cvq_loss(model, LossConfig(), joints, d.a[:64], d.b[:64])[1]
 
 
 @pytest.fixture(scope="module")
 def trained(data):
     d, mean, std = data
     joints = Joints(mean, std)
-    tc = TrainConfig(steps=30, seconds=120, batch=16, lr=3e-3, warmup=5, log_every=100)
+    tc = TrainConfig(steps=40, seconds=1e6, batch=16, lr=2e-3, warmup=5, log_every=100)
     vq, hist = train_cvq(TINY, LossConfig(), tc, d, joints, log=lambda m: None)
     return vq, joints, hist
 
@@ -58,9 +67,12 @@ def trained(data):
 def test_cvq_loss_falls(data, trained):
     d, _, _ = data
     vq, joints, hist = trained
-    first = hist.rows[0]["loss"]
-    after = _eval_loss(vq, joints, d)
-    assert after < 0.9 * first, (first, hist.rows)
+    first, after = hist.rows[0], _eval_terms(vq, joints, d)
+    # The total falls, and so do the reconstruction and the key-joint trajectory error
+    # (GDM's second term is not zero even for a perfect pair, so the total falls less).
+    assert after["loss"] < 0.9 * first["loss"], (first, after)
+    assert after["recon"] < 0.9 * first["recon"] and after["ktraj"] < 0.85 * first["ktraj"], (
+        first, after)
 
 
 def test_cmt_learns_and_exports_match_torch(data, trained, tmp_path):
@@ -70,7 +82,7 @@ def test_cmt_learns_and_exports_match_torch(data, trained, tmp_path):
     assert codes.shape == (len(d), 2, 4) and codes.max() < TINY.codes
     torch.manual_seed(0)
     before = evaluate_cmt(CMT(TINY_CMT), codes, d.text)["ce"]
-    cmt, _ = train_cmt(TINY_CMT, TrainConfig(steps=30, seconds=120, batch=32, lr=3e-3, warmup=5,
+    cmt, _ = train_cmt(TINY_CMT, TrainConfig(steps=30, seconds=1e6, batch=32, lr=3e-3, warmup=5,
                                              log_every=100), codes, d.text, log=lambda m: None)
     after = evaluate_cmt(cmt, codes, d.text)["ce"]
     assert after < before - 0.3, (before, after)
