@@ -84,3 +84,39 @@ test("B reacts to A: the reactor streams in next to the walk and is stored as th
   expect([reopened.motionId, reopened.persons]).toEqual([pairId, 2]);
   await expect(page.getByTestId("version-label")).toHaveText("v2 / 2");
 });
+
+// Cancel from the reactor's progress state: the server runs one job at a time, so a long job sent
+// through the API first keeps the react job queued while Cancel is pressed. The studio goes back
+// to the actor as it was (one person, its id and URL, the reactor panel), nothing is stored.
+test("Cancel while B is reacting goes back to the actor alone", async ({ page }, info) => {
+  await openStudio(page);
+  await startGeneration(page, "a person walks forward", 1, 2);
+  const actorId = (await waitDone(page)).motionId!;
+  const blocker = await page.request.post("/api/jobs", {
+    data: { prompt: "a person walks forward, then jumps, then dances", persons: 1, seconds: 12 },
+  });
+  expect(blocker.status()).toBe(201);
+
+  await page.getByTestId("reactor-add").click(); // no intent: the field is left out
+  await expect(page.getByTestId("progress")).toContainText("reactor");
+  await expect(page.getByTestId("reactor-add")).toBeDisabled();
+  const deleted = page.waitForResponse((r) => r.request().method() === "DELETE" && /\/api\/jobs\/[^/]+$/.test(r.url()));
+  await page.getByTestId("cancel").click();
+  const res = await deleted;
+  expect(await res.json()).toMatchObject({ cancelled: true });
+  const jobId = res.url().split("/").pop()!;
+
+  await page.waitForFunction((id) => window.__interplay.motionId === id && window.__interplay.phase === "done", actorId, { timeout: 60_000 });
+  const h = await hook(page);
+  expect(h.persons).toBe(1);
+  await expect(page).toHaveURL(new RegExp(`/m/${actorId}$`));
+  await expect(page.getByTestId("progress")).toHaveCount(0);
+  await expect(page.getByTestId("error-banner")).toBeHidden();
+  await expect(page.getByTestId("reactor")).toBeVisible();
+  await expect(page.getByTestId("version-label")).toHaveText("v1 / 1");
+  await shot(page, "r-cancelled", info);
+  const job = await (await page.request.get(`/api/jobs/${jobId}`)).json();
+  expect(job.status).toBe("failed");
+  expect((await page.request.get(`/api/motions/${job.motion_id}`)).status()).toBe(404);
+  await page.request.delete(`/api/jobs/${(await blocker.json()).job_id}`); // free the server
+});

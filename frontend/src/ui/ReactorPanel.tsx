@@ -31,7 +31,7 @@ export function ReactorPanel() {
         <input
           data-testid="reactor-intent"
           aria-label="Intent (optional)"
-          placeholder="Intent (optional), e.g. “shake hands”"
+          placeholder="Intent (optional): shake hands…"
           maxLength={MAX_INTENT}
           value={intent}
           onChange={(e) => setIntent(e.target.value)}
