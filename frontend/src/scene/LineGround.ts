@@ -14,7 +14,7 @@ export const FLOOR_COLOUR = "#181b22";
 // m: where the lines have faded out. Minor lines sooner: far away, at a grazing angle, lines
 // 0.5 m apart crowd into a band of aliased pixels (there is no MSAA in light quality).
 const MAJOR_RADIUS = 14;
-const MINOR_RADIUS = 8;
+const MINOR_RADIUS = 6.5;
 const PIECE = 2; // m
 const MINOR = 0.5;
 const MAJOR = 2;
