@@ -60,6 +60,7 @@ VARIANTS = {  # name → (CVQ config, loss config)
     "coda_noppl": (CVQ, LossConfig(w_ppl=0.0)),
 }
 EXPORTED = ("coda", "coda_noics", "coda_nogdm", "coda_noppl")
+THREADS = 1
 
 
 def train_variant(name: str, vq_train: TrainConfig, cmt_seconds: float, sets, joints, mean,
@@ -94,7 +95,9 @@ def train_variant(name: str, vq_train: TrainConfig, cmt_seconds: float, sets, jo
 
 def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), early: bool = False, log=print,
             weights: Path = WEIGHTS) -> dict:
-    torch.set_num_threads(2)
+    # One thread, measured on the shared 2-core CPU at load ~9: 0.9–2 s per CVQ step with one
+    # torch thread vs 20 s with two (two threads wait on each other when cores are busy).
+    torch.set_num_threads(THREADS)
     b = Budgets(**{k: type(v)(max(1, v * scale)) for k, v in asdict(budgets).items()})
     start, times = time.perf_counter(), {}
     sets, mean, std = load_all()
