@@ -30,7 +30,10 @@ test("the agent timeline shows the plan, then review rounds as they stream; a se
   await expect(page.getByTestId("review").first()).toBeVisible();
 
   // re-run the first segment: a new job with its prompt
+  // (the page still says "done" for the old motion until the new job is created: wait for the
+  // new motion, not just for "done")
   await page.getByTestId("rerun-0").click();
+  await page.waitForFunction((old) => window.__interplay.motionId !== old && ["done", "error"].includes(window.__interplay.phase), done.motionId, { timeout: 150_000 });
   const again = await waitDone(page);
   expect(again.motionId).not.toBe(done.motionId);
   expect((await hook(page)).phase).toBe("done");
