@@ -47,10 +47,12 @@ def _reading(n: dict) -> list[str]:
     out += ["",
             f"The shipped model reconstructs the test pairs to {main['mpjpe_m'] * 100:.1f} cm "
             f"MPJPE (joints in the pair frame, so root drift counts); its reconstructions touch "
-            f"less than the real pairs ({main['contact_frames']:.1f} vs "
+            f"{'less' if main['contact_frames'] < real['contact_frames'] else 'more'} than the real "
+            f"pairs ({main['contact_frames']:.1f} vs "
             f"{real['contact_frames']:.1f} hand-contact frames per window, IF {main['if']:.3f} vs "
-            f"{real['if']:.3f}) and intersect more deeply when they do (IV {main['iv_cm3']:.0f} vs "
-            f"{real['iv_cm3']:.0f} cm³/frame). Caveats: every row is one seed; the ablation rows "
+            f"{real['if']:.3f}) and their intersection volume is "
+            f"{'larger' if main['iv_cm3'] > real['iv_cm3'] else 'smaller'} (IV "
+            f"{main['iv_cm3']:.0f} vs {real['iv_cm3']:.0f} cm³/frame). Caveats: every row is one seed; the ablation rows "
             "are short (under-trained) runs, so differences of a few per cent between them are "
             "within what a second seed could change (not measured); the CCL weights are the "
             "paper's, not tuned here."]
