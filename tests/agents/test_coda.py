@@ -29,7 +29,7 @@ def test_generate_is_seeded_with_fixed_bones_on_the_floor(rt):
         assert bone_deviation(p).max() < 1e-6
         assert 1.0 < np.ptp(p[0, :, 1]) < 2.2          # a standing person's height, metres
     lowest = np.concatenate([p[..., 1].min(axis=1) for p in a])
-    assert abs(np.percentile(lowest, 2)) < 1e-6
+    assert abs(np.percentile(lowest, 2)) < 0.01 and lowest.min() > -1e-9
 
 
 def test_a_test_windows_own_tokens_decode_close_to_it(rt):

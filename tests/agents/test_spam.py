@@ -275,22 +275,29 @@ def test_regenerate_edit_raises_the_arm_of_a_captured_walk_and_keeps_the_legs(wa
 
 
 def test_generated_feet_are_held_where_planted_on_fixed_bones():
-    """The shipped runtime holds planted feet (leg IK); the same seed without it slides them.
-    Bones keep their lengths, the stretch's first and last frames are untouched, and a long
-    motion of several pieces has no jump where the pieces meet."""
-    from interplay.agents.footlock import lock_feet
+    """The shipped runtime puts the body on the floor and holds planted feet (leg IK); the same
+    seed without it hovers and slides. Bones keep their lengths, the stretch's first and last
+    frame is untouched, and a long motion of several pieces has no jump where pieces meet."""
+    from interplay.agents.footlock import ground, lock_feet
     from interplay.motion.metrics import clip_metrics
     free, held = SpamRuntime.load(foot_lock=False), SpamRuntime.load()
     skate = []
     for seed in range(3):
         a = free.generate("a person walks forward", 120, seed)
         b = held.generate("a person walks forward", 120, seed)
-        assert np.allclose(b, lock_feet(a)) and np.abs(a[[0, -1]] - b[[0, -1]]).max() < 1e-3
+        assert np.allclose(b, lock_feet(ground(a, fade_start=False)))
+        assert np.abs(a[-1] - b[-1]).max() < 1e-3          # a stretch end: nothing moved
         bone = lambda x: np.linalg.norm(x[:, 1:] - x[:, sk.PARENTS[1:]], axis=-1)  # noqa: E731
         assert np.abs(bone(b) - bone(a)).max() < 1e-9
-        skate.append((clip_metrics([a])["foot_skating"], clip_metrics([b])["foot_skating"]))
-    before, after = np.mean(skate, axis=0)
-    assert after < 0.5 * before, skate
+        ma, mb = clip_metrics([a]), clip_metrics([b])
+        skate.append((ma["foot_skating"], mb["foot_skating"], ma["floating"], mb["floating"]))
+    skate_before, skate_after, float_before, float_after = np.mean(skate, axis=0)
+    assert skate_after < 0.5 * skate_before and float_after <= float_before + 1e-3, skate
+    # a hovering jump is put down between its flights; its lowest joint still leaves the floor
+    j = free.generate("a person jumps", 120, seed=1)
+    g = ground(j)
+    low = g[..., 1].min(axis=1)
+    assert np.percentile(low, 10) < 0.02 <= j[..., 1].min(axis=1).min() and low.max() > 0.03
     # several pieces: the body moves at most the IK's whole-body shift from the free motion,
     # and no joint jumps (10 m/s at 20 fps) where the pieces meet or anywhere else
     from interplay.agents.footlock import MAX_SHIFT

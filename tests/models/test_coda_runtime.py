@@ -50,7 +50,7 @@ def test_generate_shapes_seed_bones_and_floor(rt):
     for p in a:                                    # bones on fixed lengths (IK → FK)
         assert bone_deviation(p).max() < 1e-6
     lowest = np.concatenate([p[..., 1].min(axis=1) for p in a])
-    assert abs(np.percentile(lowest, 2)) < 1e-6    # the floor at y = 0
+    assert abs(np.percentile(lowest, 2)) < 0.01 and lowest.min() > -1e-9    # the floor at y = 0
 
 
 def test_long_motions_go_window_by_window_with_reencoded_context(rt, monkeypatch):

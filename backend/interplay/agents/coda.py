@@ -195,6 +195,9 @@ class CodaRuntime:
                 out = np.stack([fit_to_skeleton(p, o)[0] for p, o in zip(out, offsets)])
                 if hist.shape[1] == 0:                  # the floor at y = 0, once
                     out[..., 1] -= floor_height(list(out))
+                # a frame whose lowest joint sinks below the floor (the decoder's window edge
+                # does, by up to ~0.1 m) is lifted onto it
+                out[..., 1] -= np.minimum(out[..., 1].min(axis=2), 0.0)[..., None]
                 start = hist.shape[1]
                 hist = np.concatenate([hist, out], axis=1)
                 for a in range(0, keep, CHUNK):

@@ -166,3 +166,23 @@ def apply_foot_corrections(mapped: np.ndarray, corr: np.ndarray) -> np.ndarray:
         out[:, toe[leg]] = out[:, ankle[leg]] + foot[:, leg, None] * along / np.maximum(
             np.linalg.norm(along, axis=1, keepdims=True), 1e-9)
     return out
+
+
+def ground(joints: np.ndarray, window: int = 25, edge: int = 4, fade_start: bool = True
+           ) -> np.ndarray:
+    """Joints (T, 22, 3) moved vertically so that, within every `window` frames (1.25 s), the
+    lowest joint touches y = 0: a generated body that hovers or sinks is put on the floor while
+    a jump's flight (shorter than half the window) keeps its height above the take-off and
+    landing. The shift is smoothed over 9 frames and fades out over `edge` frames at both ends,
+    so stretches treated one by one still meet."""
+    t = len(joints)
+    lowest = joints[..., 1].min(axis=1)
+    half = window // 2                     # rolling minimum (window_percentile at 0 is ~50x slower)
+    padded = np.pad(lowest, (half, window - 1 - half), mode="edge")
+    floor = np.lib.stride_tricks.sliding_window_view(padded, window).min(axis=1)
+    start = np.arange(t) if fade_start else np.full(t, edge)   # a motion's first frame: no fade
+    ramp = np.minimum(1.0, np.minimum(start, np.arange(t)[::-1]) / max(1, edge))
+    out = joints.copy()
+    shift = np.minimum(smooth(floor, 9), lowest)     # smoothing never sinks a frame
+    out[..., 1] -= (shift * ramp)[:, None]
+    return out

@@ -66,9 +66,9 @@ class SpamRuntime:
                  foot_lock: bool = True):
         self.config, self.normalizer, self.graphs = config, normalizer, graphs
         self._encoder = encoder
-        # Generated planted feet slide (foot skating 0.34 m/s vs 0.08 captured, docs/eval.md):
-        # generation holds them in place with leg IK (`footlock.lock_feet`); edits keep the
-        # input's own legs or re-pose them from tokens as before.
+        # Generated bodies hover and their planted feet slide (floating and foot skating in
+        # docs/eval.md): generation puts each stretch on the floor and holds planted feet with
+        # leg IK (`footlock.ground`, `footlock.lock_feet`); edits keep the input's legs.
         self.foot_lock = foot_lock
 
     @classmethod

@@ -16,7 +16,7 @@ from typing import Iterator
 import numpy as np
 
 from ..motion import features as F
-from .footlock import lock_feet
+from .footlock import ground, lock_feet
 
 TRANSITION = 4   # tokens (0.8 s) of blended transition between pieces, at most
 CHUNK = 40       # frames per yielded chunk at most (the generator's streaming unit)
@@ -61,7 +61,8 @@ class Assembler:
     """Turns consecutive feature stretches (n, 239) into joints on the rest skeleton (or
     `offsets`), the first frame at the origin facing +Z, each stretch continuing the root path
     of the one before; yields (start frame, joints ≤ CHUNK frames) and stops at `total`.
-    lock: planted feet are held in place (`footlock.lock_feet`) stretch by stretch."""
+    lock: each stretch is put on the floor (`footlock.ground`) and its planted feet are held in
+    place (`footlock.lock_feet`)."""
 
     def __init__(self, total: int, offsets: np.ndarray | None = None, lock: bool = False):
         self.total, self.offsets, self.lock = int(total), offsets, lock
@@ -86,8 +87,8 @@ class Assembler:
         theta = start[2] + rows[:-1, F.SLICES["root_angvel"]].sum()
         end = joints[-1, 0]
         self._last = (rows[-1], np.array([end[0], end[2], theta]))
-        if self.lock:      # planted feet held (corrections fade out at the stretch's ends)
-            joints = lock_feet(joints)
+        if self.lock:      # on the floor, planted feet held (both fade out at the ends)
+            joints = lock_feet(ground(joints, fade_start=skip == 1))
         joints = joints[skip:skip + take]
         for a in range(0, take, CHUNK):
             yield self.done + a, joints[a:a + CHUNK]

@@ -25,7 +25,7 @@ from .edits import CASES, VAL_CASES, edit_fidelity
 from .rows import ROW_NAMES, Row, Skip, load_row
 from .testset import split_samples
 
-PHYSICAL = ("bone_deviation", "foot_skating", "ground_penetration", "com_angle")
+PHYSICAL = ("bone_deviation", "foot_skating", "ground_penetration", "floating", "com_angle")
 TEXT_METRICS = ("top1", "top2", "top3", "fid", "mm_dist", "diversity", "multimodality")
 
 
@@ -162,9 +162,10 @@ def format_table(report: dict) -> str:
     head = ["row", "R@1", "R@2", "R@3", "FID", "MM-Dist", "Diversity", "MModality"]
     body = [[name] + [_cell(r.get(k)) for k in TEXT_METRICS] for name, r in report["rows"].items()]
     lines += _grid(head, body) + [""]
-    head = ["row", "bone dev (mm)", "foot skate (m/s)", "penetration (cm)", "COM angle (°)"]
+    head = ["row", "bone dev (mm)", "foot skate (m/s)", "penetration (cm)", "floating (cm)",
+            "COM angle (°)"]
     scales = {"bone_deviation": (1000, 2), "foot_skating": (1, 3), "ground_penetration": (100, 2),
-              "com_angle": (1, 1)}
+              "floating": (100, 2), "com_angle": (1, 1)}
     body = [[name] + [_cell(r.get(k), scales[k][1], scales[k][0]) for k in PHYSICAL]
             for name, r in report["rows"].items()]
     lines += _grid(head, body)
