@@ -9,45 +9,18 @@ whichever ends first; learning rate: linear warm-up, cosine to 10 %.
 from __future__ import annotations
 
 import math
-import time
-from dataclasses import dataclass, field
 
 import numpy as np
 import torch
 import torch.nn.functional as F
+
+from models.spam.train import History, Schedule  # the same budgets and schedule as SPAM
 
 from .ccl import ccl
 from .cmt import CMT
 from .config import CMTConfig, CVQConfig, LossConfig, TrainConfig
 from .cvq import CVQVAE
 from .data import PairTensors
-
-
-@dataclass
-class History:
-    rows: list[dict] = field(default_factory=list)
-    steps: int = 0
-    seconds: float = 0.0
-
-    def last(self, key: str, n: int = 5) -> float:
-        vals = [r[key] for r in self.rows[-n:] if key in r]
-        return float(np.mean(vals)) if vals else float("nan")
-
-
-class Schedule:
-    def __init__(self, tc: TrainConfig):
-        self.tc, self.start = tc, time.perf_counter()
-
-    def elapsed(self) -> float:
-        return time.perf_counter() - self.start
-
-    def done(self, step: int) -> bool:
-        return step >= self.tc.steps or self.elapsed() >= self.tc.seconds
-
-    def lr(self, step: int) -> float:
-        frac = min(1.0, max(step / self.tc.steps, self.elapsed() / self.tc.seconds))
-        warm = min(1.0, (step + 1) / self.tc.warmup)
-        return self.tc.lr * warm * (0.1 + 0.45 * (1 + math.cos(math.pi * frac)))
 
 
 class Joints(torch.nn.Module):
