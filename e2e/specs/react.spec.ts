@@ -85,28 +85,41 @@ test("B reacts to A: the reactor streams in next to the walk and is stored as th
   await expect(page.getByTestId("version-label")).toHaveText("v2 / 2");
 });
 
-// Cancel from the reactor's progress state: the server runs one job at a time, so a long job sent
-// through the API first keeps the react job queued while Cancel is pressed. The studio goes back
+// Cancel from the reactor's progress state: the server runs one job at a time, so long jobs sent
+// through the API first keep the react job queued while Cancel is pressed (one 20 s job takes
+// only ~1.6 s on a quiet machine, so six are queued: ~10 s of queue, more under load). The studio goes back
 // to the actor as it was (one person, its id and URL, the reactor panel), nothing is stored.
-// Flaky under load (the react button is not yet rendered when the check runs): fixme until the
-// wait is made robust; the react flow itself is covered by the spec above.
-test.fixme("Cancel while B is reacting goes back to the actor alone", async ({ page }, info) => {
+// Every wait is on a state of the app (the test hook's job id and stream mode, the API's job
+// status, Playwright's retrying expects), never on time: the react job is shown to be queued
+// behind the blocker before the UI is checked, so the panel's state cannot move under the checks.
+test("Cancel while B is reacting goes back to the actor alone", async ({ page }, info) => {
   await openStudio(page);
   await startGeneration(page, "a person walks forward", 1, 2);
   const actorId = (await waitDone(page)).motionId!;
-  const blocker = await page.request.post("/api/jobs", {
-    data: { prompt: "a person walks forward, then jumps, then dances", persons: 1, seconds: 12 },
-  });
-  expect(blocker.status()).toBe(201);
+  const blockers: string[] = [];
+  for (let i = 0; i < 6; i++) {
+    const res = await page.request.post("/api/jobs", {
+      data: { prompt: "a person walks forward, then jumps, then dances, then sits down", persons: 1, seconds: 20, seed: i },
+    });
+    expect(res.status()).toBe(201);
+    blockers.push((await res.json()).job_id);
+  }
 
+  await expect(page.getByTestId("reactor-add")).toBeEnabled(); // the panel rendered for the actor
+  const posted = page.waitForResponse((r) => r.request().method() === "POST" && r.url().endsWith("/api/jobs"));
   await page.getByTestId("reactor-add").click(); // no intent: the field is left out
-  await expect(page.getByTestId("progress")).toContainText("reactor");
+  expect((await posted).request().postDataJSON()).toEqual({ mode: "react", actor_motion_id: actorId });
+  // the page streams the react job, which waits in the server's queue behind the blocker
+  await page.waitForFunction(() => window.__interplay.streamMode === "react" && window.__interplay.jobId !== null);
+  const jobId = await page.evaluate(() => window.__interplay.jobId!);
+  expect((await (await page.request.get(`/api/jobs/${jobId}`)).json()).status).toBe("queued");
+  await expect(page.getByTestId("progress")).toContainText("Starting the reactor");
   await expect(page.getByTestId("reactor-add")).toBeDisabled();
-  const deleted = page.waitForResponse((r) => r.request().method() === "DELETE" && /\/api\/jobs\/[^/]+$/.test(r.url()));
+  await expect(page.getByTestId("reactor-add")).toHaveText("Reacting…");
+
+  const deleted = page.waitForResponse((r) => r.request().method() === "DELETE" && r.url().endsWith(`/api/jobs/${jobId}`));
   await page.getByTestId("cancel").click();
-  const res = await deleted;
-  expect(await res.json()).toMatchObject({ cancelled: true });
-  const jobId = res.url().split("/").pop()!;
+  expect(await (await deleted).json()).toMatchObject({ cancelled: true });
 
   await page.waitForFunction((id) => window.__interplay.motionId === id && window.__interplay.phase === "done", actorId, { timeout: 60_000 });
   const h = await hook(page);
@@ -114,11 +127,11 @@ test.fixme("Cancel while B is reacting goes back to the actor alone", async ({ p
   await expect(page).toHaveURL(new RegExp(`/m/${actorId}$`));
   await expect(page.getByTestId("progress")).toHaveCount(0);
   await expect(page.getByTestId("error-banner")).toBeHidden();
-  await expect(page.getByTestId("reactor")).toBeVisible();
+  await expect(page.getByTestId("reactor-add")).toBeEnabled();
   await expect(page.getByTestId("version-label")).toHaveText("v1 / 1");
   await shot(page, "r-cancelled", info);
   const job = await (await page.request.get(`/api/jobs/${jobId}`)).json();
   expect(job.status).toBe("failed");
   expect((await page.request.get(`/api/motions/${job.motion_id}`)).status()).toBe(404);
-  await page.request.delete(`/api/jobs/${(await blocker.json()).job_id}`); // free the server
+  for (const id of blockers) await page.request.delete(`/api/jobs/${id}`); // free the server
 });

@@ -29,6 +29,9 @@ declare global {
   interface Window {
     __interplay: HookSnapshot & {
       parseBvh(text: string): Promise<BvhSummary>;
+      jobId: string | null;
+      streamMode: string;
+      renderScale: number;
       path: { person: number; points: [number, number][] };
       versions: { ids: string[]; index: number };
       selected: { person: number; part: string } | null;

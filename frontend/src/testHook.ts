@@ -12,6 +12,9 @@ export interface BvhSummary {
 export interface InterplayTestHook {
   readonly motionId: string | null;
   readonly phase: string;
+  /** The job being streamed (null when none) and its kind: "generate" or "react". */
+  readonly jobId: string | null;
+  readonly streamMode: string;
   readonly persons: number;
   readonly frameCount: number;
   readonly framesReceived: number;
@@ -59,6 +62,12 @@ export function installTestHook(target: Window = window): void {
     },
     get phase() {
       return useStudio.getState().stream.phase;
+    },
+    get jobId() {
+      return useStudio.getState().stream.jobId ?? null;
+    },
+    get streamMode() {
+      return useStudio.getState().stream.mode ?? "generate";
     },
     get persons() {
       return frames.persons;
