@@ -94,17 +94,18 @@ def _high_five(rng, pool, frames):
     return a, b, place, pl.contact(c0, c1, r_in, r_out, hands), PROMPTS["high_five"]
 
 
-def _hug_targets(me: np.ndarray, other: np.ndarray, arm: str, height: float,
-                 window: slice) -> np.ndarray:
-    """Wrist targets (T, 3) on the partner's upper back, just off the surface of their chest
-    sphere, as far round behind them (from the arm's side, 20°–90° off straight
-    behind) as the arm reaches within 95% of its length over the contact window."""
+def hug_targets(me: np.ndarray, other: np.ndarray, arm: str, height: float,
+                window: slice, clearance: float = HUG_CLEARANCE) -> np.ndarray:
+    """Wrist targets (T, 3) on the partner's upper back, `clearance` off the surface of their
+    chest sphere, as far round behind them (from the arm's side, 20°–90° off straight
+    behind) as the arm reaches within 95% of its length over the contact window (also used
+    by the two-person contact refinement, `agents.contact_refine`)."""
     fwd = pl.axes(other)[0]
     centre = other[:, SPINE3] + 0.3 * (other[:, sk.NECK] - other[:, SPINE3]) + height * UP
     side = pl.out_of(me, arm)
     shoulder = me[:, sk.JOINT_INDEX[f"{arm}_shoulder"]]
     limit = 0.95 * reach(me, f"{arm}_arm")
-    radius = CHEST_RADIUS * body_scale(other) + HUG_CLEARANCE
+    radius = CHEST_RADIUS * body_scale(other) + clearance
     for deg in range(20, 91, 10):
         th = np.radians(deg)
         target = centre + radius * (np.cos(th) * -fwd + np.sin(th) * side)
@@ -123,7 +124,7 @@ def _hug(rng, pool, frames):
     # One person's arms over (upper back), the other's a little lower.
     for me, other, pid, height in ((a, b, 0, rng.uniform(-0.02, 0.05)), (b, a, 1, rng.uniform(-0.14, -0.08))):
         for arm in ("left", "right"):
-            target = _hug_targets(me.joints, other.joints, arm, height, slice(c0, c1))
+            target = hug_targets(me.joints, other.joints, arm, height, slice(c0, c1))
             pl.arm_ik(me, arm, target, w, pl.pole(me.joints, arm, 0.45, 0.15, 0.1))
             hands.append([pid, f"{arm}_wrist"])
     return a, b, place, pl.contact(c0, c1, r_in, r_out, hands), PROMPTS["hug"]
