@@ -2,6 +2,11 @@
 generate pairs (real, retrieval, CODA and its ablations), per-window scores and the embedding
 FID is computed in.
 
+Rows: `coda_raw` is the shipped CODA weights' raw samples, `coda` the product's pipeline on
+the same samples (seeds are per window and repeat, so the two see the same raw pairs):
+planted feet held and the contact refinement for prompts that ask for a touch
+(`agents.pair_finish`); the ablations are raw.
+
 Test set: every 4 s window (80 frames, stride 80) of the test split's two-person clips, people
 in the clip's order, moved to the pair's canonical frame (`pairs.canonical_window`); captured
 salsa and composed (SYNTHETIC) windows are reported separately. Each window's prompt is its
@@ -33,7 +38,9 @@ from ..motion.pairs import canonical_window, pair_windows
 WINDOW = STRIDE = 80
 WEIGHTS = Path(__file__).resolve().parents[3] / "models" / "weights"
 CODA_ROWS = ("coda", "coda_noics", "coda_nogdm", "coda_noppl")
-ROW_NAMES = ("real", "retrieval") + CODA_ROWS
+# coda_raw: the shipped weights' raw samples; coda: the product's pipeline on them (the
+# contact refinement of `agents.contact_refine` for prompts that ask for a touch).
+ROW_NAMES = ("real", "retrieval", "coda_raw") + CODA_ROWS
 SCORES = ("iv_cm3", "if", "contact_frames", "foot_skating", "bone_deviation", "penetration_cm")
 Generate = Callable[[str, int, int], np.ndarray]     # (prompt, frames, seed) → (2, frames, 22, 3)
 
@@ -132,9 +139,10 @@ def _retrieval(clips) -> Generate:
     return generate
 
 
-def _coda(weights: Path) -> Generate:
+def _coda(weights: Path, product: bool = False) -> Generate:
     from ..agents.coda import CodaRuntime
     from ..agents.coda_graphs import placeholder_reason
+    from ..agents.pair_finish import finish_pair
     if not (weights / "config.json").is_file():
         raise Skip(f"no weights in models/weights/{weights.name}")
     why = placeholder_reason(weights)
@@ -146,7 +154,8 @@ def _coda(weights: Path) -> Generate:
         raise Skip(f"models/weights/{weights.name} did not load ({type(exc).__name__})") from None
 
     def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
-        return np.concatenate([c for _, c in rt.stream([(prompt, frames)], seed)], axis=1)
+        pair = np.concatenate([c for _, c in rt.stream([(prompt, frames)], seed)], axis=1)
+        return finish_pair(pair, prompt)[0] if product else pair
     return generate
 
 
@@ -156,6 +165,8 @@ def load_row(name: str, clips, weights: Path = WEIGHTS) -> Generate | None:
         return None
     if name == "retrieval":
         return _retrieval(clips)
+    if name == "coda_raw":
+        return _coda(Path(weights) / "coda")
     if name in CODA_ROWS:
-        return _coda(Path(weights) / name)
+        return _coda(Path(weights) / name, product=name == "coda")
     raise ValueError(f"unknown row {name!r}; expected one of {ROW_NAMES}")
