@@ -61,3 +61,20 @@ def test_cli_eval_pair(capsys):
     assert set(report["sets"]["composed"]["rows"]) == {"real"} and "contact" not in report
     assert main(["eval-pair", "--rows", "nope"]) == 2
     assert "unknown row" in capsys.readouterr().err
+
+
+def test_coda_rows_raw_and_product_see_the_same_samples():
+    from interplay.agents.coda_graphs import DEFAULT_DIR, FILES
+    from interplay.eval.pair import load_row
+    from interplay.eval.pair_report import touches
+    if not all((DEFAULT_DIR / f).is_file() for f in FILES):
+        import pytest
+        pytest.skip("no CODA weights committed yet")
+    raw, product = load_row("coda_raw", []), load_row("coda", [])
+    prompt = "two people shake hands"
+    a, b = raw(prompt, 80, 3), product(prompt, 80, 3)
+    assert np.array_equal(a, raw(prompt, 80, 3))
+    # the product holds the feet and makes the touch on the raw sample; the raw one has none
+    assert not touches(a, [12, 62]) and touches(b, [12, 62])
+    assert window_scores(b)[3] < window_scores(a)[3]                 # foot skating
+    assert np.abs(b[:, :, 0] - a[:, :, 0]).max() < 0.2               # the same pair, feet held
