@@ -1,6 +1,7 @@
 """The model section of `interplay bench`: wall time of `SpamRuntime.generate` for 2, 6 and 10 s
 motions and of a one-part edit of a 6 s motion, on onnxruntime in this process (sessions built
-once, two intra-op threads), and frames generated per second. Text embeddings are cached after
+once, one intra-op thread each, guided passes side by side on twin sessions), and frames
+generated per second. Text embeddings are cached after
 the warm-up, as in the server."""
 
 from __future__ import annotations
@@ -52,7 +53,9 @@ def run_model_bench(weights_dir: str | Path | None = None, runs: int = 10, warmu
         return {"weights": str(weights_dir), "error": f"{type(exc).__name__}: {exc}"}
     load_s = time.perf_counter() - t0
     report = {"weights": str(weights_dir), "trained": placeholder_reason(weights_dir) is None,
-              "load_s": round(load_s, 3), "cpus": os.cpu_count(), "threads": 2,
+              "load_s": round(load_s, 3), "cpus": os.cpu_count(),
+              "threads": rt.graphs["base"].session.get_session_options().intra_op_num_threads,
+              "parallel_cfg": bool(getattr(rt, "pairs", None)),
               "load_avg_1m": round(os.getloadavg()[0], 2),   # other work on the shared CPUs
               "codes": rt.config.K, "layers": rt.config.Q, "steps": rt.config.steps,
               "generate": [], "targets_ms": TARGETS_MS}
@@ -78,7 +81,9 @@ def format_model_table(report: dict) -> str:
     if "error" in report:
         return f"model: SPAM weights in {report['weights']} did not load: {report['error']}"
     state = "trained" if report["trained"] else "UNTRAINED placeholder"
-    lines = [f"SPAM on onnxruntime ({report['cpus']} CPUs, {report['threads']} threads, "
+    layout = ", guided passes side by side" if report.get("parallel_cfg") else ", CFG batched"
+    lines = [f"SPAM on onnxruntime ({report['cpus']} CPUs, {report['threads']} thread(s) "
+             f"per session{layout}, "
              f"{state} weights, K={report['codes']} Q={report['layers']}, "
              f"{report['steps']} steps, sessions {report['load_s']:.2f} s; "
              f"load average {report['load_avg_1m']:g} → {report['load_avg_1m_after']:g})",

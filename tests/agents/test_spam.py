@@ -159,13 +159,26 @@ def test_generation_is_seed_deterministic(stub, onnx_rt):
         assert not np.allclose(a, rt.generate("a person jumps", 80, seed=12))
 
 
-def test_onnx_graphs_generate_and_guide_in_one_batch(onnx_rt):
+def test_onnx_graphs_generate_and_guide_side_by_side_as_batched(onnx_rt):
+    """Guided steps run the conditional and unconditional passes on twin sessions at once;
+    with float transformers that gives the batched call's logits, for both transformers."""
     j = onnx_rt.generate({"global": "a person walks", "left_arm": "waves"}, 120, seed=0)
     assert j.shape == (120, 22, 3) and np.isfinite(j).all()
     assert np.ptp(sk.bone_lengths(j), axis=0).max() < 1e-6
-    logits = onnx_rt._guided(onnx_rt._base, np.zeros((4, 384), np.float32), 4.0)(
-        np.full((4, 5), onnx_rt.config.mask_id))
-    assert logits.shape == (4, 5, onnx_rt.config.K)
+    assert set(onnx_rt.pairs) == {"base", "residual"}
+    side, batched = (SpamRuntime.load(precision="fp32", encoder=StubEncoder(), parallel_cfg=p)
+                     for p in (True, False))
+    assert not batched.pairs
+    rng = np.random.default_rng(1)
+    k = side.config.K
+    tokens = np.where(rng.random((4, 12)) < 0.5, side.config.mask_id, rng.integers(0, k, (4, 12)))
+    codes = rng.integers(0, k, (4, side.config.Q, 12))
+    text = side.text_embedding("a person waves")
+    for name, args in (("base", (tokens,)), ("residual", (codes, 2))):
+        a, b = (rt._guided(name, text, 4.0)(*args) for rt in (side, batched))
+        assert a.shape == (4, 12, k) and np.allclose(a, b, atol=1e-3), np.abs(a - b).max()
+        cond_only = side._guided(name, text, 1.0)(*args)
+        assert not np.allclose(cond_only, a, atol=1e-2)       # the guidance did something
 
 
 @pytest.mark.parametrize("which", ["stub", "onnx"])

@@ -10,8 +10,8 @@ token-level edits (body part, in-between, blend).
 
 Tokens: one per part (PART_NAMES order) per `downsample` (4) frames; base layer (4, n) plus
 residual layers (4, Q, n). Generation is MoMask's: the base layer by masked decoding (cosine
-schedule, Gumbel sampling, CFG with the conditional and unconditional passes in one batch), the
-residual layers greedily one by one, then `vq_decode` → denormalise → `features.decode` (joints
+schedule, Gumbel sampling, CFG with the conditional and unconditional passes run side by side
+on twin one-thread sessions, `guided_pair`), the residual layers greedily one by one, then `vq_decode` → denormalise → `features.decode` (joints
 by forward kinematics on fixed bones, starting at the origin facing +Z). Motions longer than the
 transformers' range (`max_tokens`, 10 s) are generated as pieces joined by blended transitions
 (`spam_sequence`). Edits re-mask tokens of the input's own code sequence and keep everything
@@ -29,6 +29,7 @@ from ..motion import skeleton as sk
 from . import masked_decoding as md
 from .motion_splice import seam_corrected
 from .spam_edits import Edit, blend, edit, transition_codes, untouched_change_cm  # noqa: F401
+from .guided_pair import GuidedPair
 from .spam_graphs import SpamConfig, load_files
 from .spam_sequence import Assembler, layout
 
@@ -63,8 +64,11 @@ def part_texts(texts: Texts) -> list[str]:
 
 class SpamRuntime:
     def __init__(self, config: SpamConfig, normalizer, graphs: Mapping, encoder=None,
-                 foot_lock: bool = True):
+                 foot_lock: bool = True, pairs: Mapping[str, GuidedPair] | None = None):
         self.config, self.normalizer, self.graphs = config, normalizer, graphs
+        # Transformers whose guided passes run side by side (`guided_pair`); the others batch
+        # the conditional and unconditional passes into one call.
+        self.pairs = dict(pairs or {})
         self._encoder = encoder
         # Generated bodies hover and their planted feet slide (floating and foot skating in
         # docs/eval.md): generation puts each stretch on the floor and holds planted feet with
@@ -72,13 +76,18 @@ class SpamRuntime:
         self.foot_lock = foot_lock
 
     @classmethod
-    def load(cls, weights_dir: str | Path = DEFAULT_DIR, encoder=None, threads: int = 2,
-             precision: str | None = None, foot_lock: bool = True) -> "SpamRuntime":
+    def load(cls, weights_dir: str | Path = DEFAULT_DIR, encoder=None, threads: int = 1,
+             precision: str | None = None, foot_lock: bool = True,
+             parallel_cfg: bool = True) -> "SpamRuntime":
         """Sessions built once; the graphs are run once on a tiny input so a broken export
         fails here (ValueError / FileNotFoundError), not on the first request. precision:
-        "fp32" | "int8" transformers (None: what config.json ships)."""
+        "fp32" | "int8" transformers (None: what config.json ships). threads: intra-op threads
+        per session; parallel_cfg: each transformer also gets a twin session and guided steps
+        run their two passes concurrently (docs/bench.md: one thread per session and the
+        passes side by side is the fastest of the layouts measured on the 2-core CPU)."""
         config, normalizer, graphs = load_files(weights_dir, threads, precision)
-        runtime = cls(config, normalizer, graphs, encoder, foot_lock)
+        pairs = {g: GuidedPair(graphs[g]) for g in ("base", "residual")} if parallel_cfg else {}
+        runtime = cls(config, normalizer, graphs, encoder, foot_lock, pairs)
         runtime.check()
         return runtime
 
@@ -100,28 +109,45 @@ class SpamRuntime:
             if tuple(got) != want:
                 raise ValueError(f"{name} graph gives shape {tuple(got)}, the contract says {want}")
 
+    @staticmethod
+    def _base_feeds(tokens, text, cond) -> dict[str, np.ndarray]:
+        return {"tokens": tokens.astype(np.int64), "text": text, "cond": cond}
+
+    @staticmethod
+    def _residual_feeds(codes, layer: int, text, cond) -> dict[str, np.ndarray]:
+        return {"tokens": codes.astype(np.int64), "text": text, "cond": cond,
+                "layer": np.full(codes.shape[0], layer, dtype=np.int64)}
+
     def _base(self, tokens, text, cond) -> np.ndarray:
-        return self.graphs["base"](tokens=tokens.astype(np.int64), text=text, cond=cond)
+        return self.graphs["base"](**self._base_feeds(tokens, text, cond))
 
     def _residual(self, codes, layer: int, text, cond) -> np.ndarray:
-        layers = np.full(codes.shape[0], layer, dtype=np.int64)
-        return self.graphs["residual"](tokens=codes.astype(np.int64), layer=layers, text=text,
-                                       cond=cond)
+        return self.graphs["residual"](**self._residual_feeds(codes, layer, text, cond))
 
-    def _guided(self, call, text: np.ndarray, scale: float):
-        """`fn(tokens, *extra) -> logits (4, n, K)` with classifier-free guidance: the
-        conditional and unconditional passes as one batch of two (only the conditional pass
-        when scale = 1). `call(tokens, *extra, text, cond)` is `_base` or `_residual`."""
+    def _guided(self, name: str, text: np.ndarray, scale: float):
+        """`fn(tokens, *extra) -> logits (4, n, K)` of transformer `name` ("base" or
+        "residual", extra = (layer,)) with classifier-free guidance: the conditional and
+        unconditional passes side by side (`self.pairs`) or as one batch of two; only the
+        conditional pass when scale = 1."""
+        feeds, graph, pair = ((self._base_feeds if name == "base" else self._residual_feeds),
+                              self.graphs[name], self.pairs.get(name))
+        one, zero = np.ones(1, np.float32), np.zeros(1, np.float32)
         if scale == 1.0:
             def cond_only(tokens, *extra):
-                return call(tokens[None], *extra, text[None], np.ones(1, np.float32))[0]
+                return graph(**feeds(tokens[None], *extra, text[None], one))[0]
             return cond_only
+        if pair is not None:
+            def side_by_side(tokens, *extra):
+                cond, uncond = pair.both(feeds(tokens[None], *extra, text[None], one),
+                                         feeds(tokens[None], *extra, text[None], zero))
+                return md.guided(cond[0], uncond[0], scale)
+            return side_by_side
 
-        def fn(tokens, *extra):
-            out = call(np.stack([tokens, tokens]), *extra, np.stack([text, text]),
-                       np.array([1.0, 0.0], np.float32))
+        def batched(tokens, *extra):
+            out = graph(**feeds(np.stack([tokens, tokens]), *extra, np.stack([text, text]),
+                                np.array([1.0, 0.0], np.float32)))
             return md.guided(out[0], out[1], scale)
-        return fn
+        return batched
 
     # -- text and codes ----------------------------------------------------------------------
     @property
@@ -153,7 +179,8 @@ class SpamRuntime:
 
     def fill(self, codes: np.ndarray, editable: np.ndarray, text: np.ndarray,
              rng: np.random.Generator, force: np.ndarray | None = None, cfg: float | None = None,
-             steps: int | None = None, temperature: float | None = None) -> np.ndarray:
+             steps: int | None = None, temperature: float | None = None,
+             cfg_residual: float | None = None) -> np.ndarray:
         """Codes (4, Q, n) with the `editable` (4, n) base tokens re-decoded by masked decoding
         and residual tokens predicted again where the base token changed or `force` (default:
         everywhere editable). Sequences longer than max_tokens go window by window."""
@@ -164,8 +191,9 @@ class SpamRuntime:
         out = np.asarray(codes, dtype=np.int64).copy()
         editable = np.asarray(editable, dtype=bool)
         force = editable if force is None else (np.asarray(force, dtype=bool) & editable)
-        base_fn = self._guided(self._base, text, cfg)
-        res_fn = self._guided(self._residual, text, c.cfg_residual)
+        base_fn = self._guided("base", text, cfg)
+        res_fn = self._guided("residual", text, c.cfg_residual if cfg_residual is None
+                              else cfg_residual)
         windows = md.token_windows(editable, c.max_tokens)
         before = out[:, 0].copy()
         for lo, elo, ehi, hi in windows:
@@ -218,13 +246,14 @@ class SpamRuntime:
             prev = (codes, feats)
 
     def generate(self, texts: Texts, frames: int, seed: int, cfg: float | None = None,
-                 steps: int | None = None, temperature: float | None = None) -> np.ndarray:
+                 steps: int | None = None, temperature: float | None = None,
+                 cfg_residual: float | None = None) -> np.ndarray:
         """Joints (frames, 22, 3) float64 for one global prompt or per-part prompts."""
         if not isinstance(frames, (int, np.integer)) or frames < 1:
             raise ValueError(f"frames must be a positive integer, got {frames!r}")
         part_texts(texts)  # validate before any model call
         chunks = [c for _, c in self.stream([(texts, int(frames))], seed, cfg=cfg, steps=steps,
-                                            temperature=temperature)]
+                                            temperature=temperature, cfg_residual=cfg_residual)]
         return np.concatenate(chunks)
 
     # -- edits (spam_edits) ---------------------------------------------------------------
