@@ -79,6 +79,32 @@ def fit_offsets(joints: np.ndarray, template: np.ndarray = sk.REST_OFFSETS) -> n
     return offsets
 
 
+def _ik_plan(parents=sk.PARENTS) -> list[tuple[str, np.ndarray, np.ndarray, np.ndarray]]:
+    """IK's steps, one tree level at a time (a level needs only its parents' global rotations):
+    per level ("frame", joint, -, parent) for the pelvis / spine3 frames, then one batched
+    ("swing", joints, their single children, parents) and ("leaf", joints, -, parents)."""
+    depth: list[int] = []
+    for p in parents:
+        depth.append(0 if p < 0 else depth[p] + 1)
+    steps, none = [], np.zeros(0, dtype=int)
+    for d in range(max(depth) + 1):
+        level = [j for j in range(len(parents)) if depth[j] == d]
+        for j in level:
+            if j in _FRAME_CHILDREN:
+                steps.append(("frame", np.array([j]), none, np.array([parents[j]])))
+        swing = [j for j in level if j not in _FRAME_CHILDREN and len(sk.children(j)) == 1]
+        leaf = [j for j in level if not sk.children(j) and parents[j] >= 0]
+        if swing:
+            steps.append(("swing", np.array(swing), np.array([sk.children(j)[0] for j in swing]),
+                          np.array([parents[j] for j in swing])))
+        if leaf:
+            steps.append(("leaf", np.array(leaf), none, np.array([parents[j] for j in leaf])))
+    return steps
+
+
+_IK_PLAN = _ik_plan()
+
+
 def inverse_kinematics(joints: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Local rotations (T, 22, 3, 3) and root positions (T, 3) that reproduce joints (T, 22, 3)
     on a skeleton with these offsets (exact for bone directions; twist about a single bone is
@@ -87,18 +113,20 @@ def inverse_kinematics(joints: np.ndarray, offsets: np.ndarray) -> tuple[np.ndar
     rest = sk.rest_joints(offsets)
     glob = np.tile(np.eye(3), (t, sk.NUM_JOINTS, 1, 1))
     local = glob.copy()
-    for j, p in enumerate(sk.PARENTS):
-        kids = sk.children(j)
-        parent_glob = glob[:, p] if p >= 0 else np.tile(np.eye(3), (t, 1, 1))
-        if j in _FRAME_CHILDREN:
+    for kind, js, cs, ps in _IK_PLAN:
+        if kind == "frame":
             # Rotation taking the rest frame onto the observed frame (global).
+            j, p = int(js[0]), int(ps[0])
             g = _joint_frames(joints, j) @ _joint_frames(rest, j).T
-            local[:, j] = np.swapaxes(parent_glob, -1, -2) @ g
-        elif len(kids) == 1:
-            c = kids[0]
-            target = np.einsum("tji,tj->ti", parent_glob, joints[:, c] - joints[:, j])
-            local[:, j] = rotation_between(np.broadcast_to(offsets[c], target.shape), target)
-        glob[:, j] = parent_glob @ local[:, j]
+            local[:, j] = g if p < 0 else np.swapaxes(glob[:, p], -1, -2) @ g
+            glob[:, j] = g
+        elif kind == "swing":
+            parent_glob = glob[:, ps]                                    # (T, m, 3, 3)
+            target = np.einsum("tmji,tmj->tmi", parent_glob, joints[:, cs] - joints[:, js])
+            local[:, js] = rotation_between(np.broadcast_to(offsets[cs], target.shape), target)
+            glob[:, js] = parent_glob @ local[:, js]
+        else:                                    # leaves: identity, so the parent's rotation
+            glob[:, js] = glob[:, ps]
     return local, joints[:, sk.PELVIS].copy()
 
 
