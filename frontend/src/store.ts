@@ -15,7 +15,8 @@ export const frames = new FrameBuffer();
 /** The playback clock: a fractional frame position, advanced by the render loop. */
 export const playhead = { pos: 0 };
 /** Counters the render loop keeps (read by the test hook). */
-export const renderStats: { renders: number; quality: string } = { renders: 0, quality: "" };
+/** What the render loop reports: frames drawn, the quality, the render scale (pixel ratio) now. */
+export const renderStats: { renders: number; quality: string; scale: number } = { renders: 0, quality: "", scale: 0 };
 
 /** Pointer state the render loop reads (not React state): the part under the pointer, and the
  * points of a path being drawn right now (committed to the store on release). */

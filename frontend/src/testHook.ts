@@ -24,6 +24,8 @@ export interface InterplayTestHook {
   readonly renderCount: number;
   /** "full" or "light" (software WebGL: no MSAA, blob shadows). */
   readonly quality: string;
+  /** The pixel ratio the scene is drawn at now (light quality: set by dynamic resolution). */
+  readonly renderScale: number;
   /** The drawn / preset path ([x, z] points) and who follows it. */
   readonly path: { person: number; points: [number, number][] };
   readonly versions: { ids: string[]; index: number };
@@ -92,6 +94,9 @@ export function installTestHook(target: Window = window): void {
     },
     get quality() {
       return renderStats.quality;
+    },
+    get renderScale() {
+      return renderStats.scale;
     },
     get path() {
       const p = useStudio.getState().path;

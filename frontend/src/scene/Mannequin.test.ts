@@ -55,8 +55,11 @@ describe("Mannequin (one merged mesh)", () => {
 
 describe("debug flags", () => {
   it("reads ?hide= and ?pixelRatio=, ignoring bad values", () => {
-    expect(debugFlags("?hide=ground,people&pixelRatio=0.5")).toEqual({ hide: new Set(["ground", "people"]), pixelRatio: 0.5 });
-    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null });
-    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null });
+    expect(debugFlags("?hide=ground,people&pixelRatio=0.5")).toEqual({
+      hide: new Set(["ground", "people"]), pixelRatio: 0.5, dynamicResolution: false, alpha: false,
+    });
+    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false });
+    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false });
+    expect(debugFlags("?dynres=0&alpha=1")).toMatchObject({ dynamicResolution: false, alpha: true });
   });
 });

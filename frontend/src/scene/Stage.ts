@@ -40,7 +40,19 @@ export class Stage {
   ) {
     const settings = QUALITY[quality];
     this.settings = settings;
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: settings.antialias });
+    // An opaque canvas (the scene always clears to its background), so the compositor need not
+    // blend it with the page, and no drawing buffer kept between frames. three (r187) asks for
+    // an alpha channel whatever its `alpha` option says, so the context is made here.
+    const context = canvas.getContext("webgl2", {
+      alpha: this.debug.alpha,
+      depth: true,
+      stencil: false,
+      antialias: settings.antialias,
+      premultipliedAlpha: true,
+      preserveDrawingBuffer: false,
+      powerPreference: "high-performance",
+    });
+    this.renderer = new THREE.WebGLRenderer({ canvas, context: context ?? undefined, antialias: settings.antialias });
     this.renderer.setPixelRatio(this.debug.pixelRatio ?? Math.min(window.devicePixelRatio, settings.maxPixelRatio));
     this.renderer.shadowMap.enabled = settings.shadowMap;
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
@@ -73,6 +85,18 @@ export class Stage {
     this.controls.maxDistance = 30;
     this.controls.addEventListener("change", () => (this.dirty = true));
     this.controls.update();
+  }
+
+  /** The pixel ratio drawn at (dynamic resolution changes it while playing). */
+  get renderScale(): number {
+    return this.renderer.getPixelRatio();
+  }
+
+  set renderScale(ratio: number) {
+    const r = Math.min(ratio, window.devicePixelRatio || 1);
+    if (r === this.renderer.getPixelRatio()) return;
+    this.renderer.setPixelRatio(r); // resizes the drawing buffer, keeps the CSS size
+    this.dirty = true;
   }
 
   resize(width: number, height: number): void {

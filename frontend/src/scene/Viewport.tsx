@@ -10,7 +10,9 @@ import { Vector3 } from "three";
 import { pointer, sceneProbe } from "../store";
 import { Picker } from "./Picker";
 import { attachPointer } from "./interaction";
-import { detectQuality } from "./quality";
+import { detectQuality, QUALITY } from "./quality";
+import { debugFlags } from "./debugFlags";
+import { LIGHT_RESOLUTION, ResolutionController } from "./resolution";
 import { Stage } from "./Stage";
 
 export function Viewport() {
@@ -21,7 +23,19 @@ export function Viewport() {
     if (!canvas) return;
     const stage = new Stage(canvas, detectQuality());
     renderStats.quality = stage.quality;
-    const fit = () => stage.resize(canvas.clientWidth, canvas.clientHeight);
+    // light quality: hold the display's rate with the render scale, judged on frames drawn at
+    // consecutive refreshes (playback), from their requestAnimationFrame times
+    const dynres = QUALITY[stage.quality].dynamicResolution && debugFlags().dynamicResolution
+      ? new ResolutionController(LIGHT_RESOLUTION)
+      : null;
+    if (dynres) stage.renderScale = dynres.scale;
+    renderStats.scale = stage.renderScale;
+    let drewLast = false;
+    const fit = () => {
+      stage.resize(canvas.clientWidth, canvas.clientHeight);
+      const scale = dynres?.fit(canvas.clientWidth * canvas.clientHeight);
+      if (scale) renderStats.scale = stage.renderScale = scale;
+    };
     const observer = new ResizeObserver(fit);
     observer.observe(canvas);
     fit();
@@ -42,7 +56,8 @@ export function Viewport() {
 
     const tick = (now: number) => {
       raf = requestAnimationFrame(tick);
-      const dt = Math.min(0.1, (now - last) / 1000);
+      const interval = now - last;
+      const dt = Math.min(0.1, interval / 1000);
       last = now;
       const s = useStudio.getState();
       const skeleton = s.skeleton;
@@ -92,7 +107,13 @@ export function Viewport() {
           drawn = { pos, version: frames.version };
         }
       }
-      if (stage.renderIfDirty()) renderStats.renders++;
+      const drew = stage.renderIfDirty();
+      if (drew) renderStats.renders++;
+      if (dynres && drew && drewLast) {
+        const scale = dynres.sample(interval);
+        if (scale !== null) renderStats.scale = stage.renderScale = scale;
+      }
+      drewLast = drew;
     };
     raf = requestAnimationFrame(tick);
     return () => {

@@ -13,11 +13,13 @@ export interface QualitySettings {
   sphere: [number, number];
   /** The floor grid as line segments (LineGround) rather than a per-pixel shader (Ground). */
   gridLines: boolean;
+  /** Hold the display's rate by lowering / raising the pixel ratio (resolution.ts). */
+  dynamicResolution: boolean;
 }
 
 export const QUALITY: Record<Quality, QualitySettings> = {
-  full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12], gridLines: false },
-  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [8, 6], gridLines: true },
+  full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12], gridLines: false, dynamicResolution: false },
+  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [8, 6], gridLines: true, dynamicResolution: true },
 };
 
 const SOFTWARE = /swiftshader|llvmpipe|softpipe|software|basic render/i;
