@@ -17,3 +17,13 @@ def test_model_bench_times_generation_and_an_edit(tmp_path):
     assert "generate 6 s" in table and "edit 1 part" in table and "targets" in table
     missing = run_model_bench(tmp_path / "none", runs=1)
     assert "error" in missing and "did not load" in format_model_table(missing)
+
+
+def test_pair_bench_times_generation_and_the_finished_product(tmp_path):
+    from interplay.bench_pair import format_pair_table, run_pair_bench
+    report = run_pair_bench(runs=1, warmup=0, seconds=(2.0,))
+    assert [r["frames"] for r in report["generate"]] == [40]
+    assert report["product"]["frames"] == 120 and report["product"]["p50_ms"] > 0
+    table = format_pair_table(report)
+    assert "generate 2 s" in table and "+ finish 6 s" in table and "target" in table
+    assert "did not load" in format_pair_table(run_pair_bench(tmp_path / "none", runs=1))
