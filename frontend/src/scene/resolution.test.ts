@@ -115,4 +115,14 @@ describe("ResolutionController", () => {
     // the window shrinks while at the floor: back up to the new floor at once
     expect(large.fit(640 * 360)).toBe(0.75);
   });
+
+  it("a probe that misses the rate a little (not slow) still steps back: it must hold the rate", () => {
+    const c = new ResolutionController(policy);
+    feed(c, AT_RATE, 20); // probe → 0.875
+    expect(c.scale).toBe(0.875);
+    expect(feed(c, AT_RATE * 1.06, 3 + 10)).toEqual([0.75]); // 56.6 fps: between fast and slow
+    // and, long after a probe, the same frames only hold (hysteresis)
+    const d = new ResolutionController({ ...policy, calm: 1000 });
+    expect(feed(d, AT_RATE * 1.06, 500)).toEqual([]);
+  });
 });

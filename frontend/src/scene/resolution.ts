@@ -5,8 +5,9 @@
 // - a window slower than `slow` × target steps the scale down one level (never below the
 //   floor: the last level), at once;
 // - `calm` windows in a row at the target step it up one level again (a probe), never above
-//   the first level; a probe that is slow within `calm` windows was too much: the calm needed
-//   for the next probe doubles (up to `maxCalm` windows), so the scale does not oscillate;
+//   the first level; a probe must hold the rate: a window off the rate (above fast × target)
+//   within `calm` windows of it steps back down, and the calm needed for the next probe
+//   doubles (up to `maxCalm` windows), so the scale does not oscillate;
 // - after any change, `settle` frames are ignored (frames already in flight at the old size);
 // - an interval longer than `gap` ms is a pause (playback stopped, tab hidden), not a slow
 //   frame: the window starts again;
@@ -42,7 +43,7 @@ export const LIGHT_RESOLUTION: ResolutionPolicy = {
   targetMs: 1000 / 60,
   window: 30,
   slow: 1.12,
-  fast: 1.04,
+  fast: 1.02,
   calm: 4,
   maxCalm: 64,
   settle: 6,
@@ -100,9 +101,13 @@ export class ResolutionController {
     const mean = this.sum / this.n;
     this.sum = this.n = 0;
     this.sinceRaise++;
-    if (mean > p.slow * p.targetMs) {
+    const probing = this.sinceRaise <= p.calm;
+    if (mean > p.slow * p.targetMs || (probing && mean > p.fast * p.targetMs)) {
       this.calmWindows = 0;
-      if (this.sinceRaise <= p.calm) this.need = Math.min(p.maxCalm, this.need * 2); // failed probe
+      if (probing) {
+        this.need = Math.min(p.maxCalm, this.need * 2); // a failed probe
+        this.sinceRaise = Infinity;
+      }
       return this.move(+1);
     }
     if (mean <= p.fast * p.targetMs) {
