@@ -4,9 +4,11 @@ A guided step needs the transformer twice on the same tokens: with the prompt an
 Batched (B = 2, one session, two intra-op threads) the two passes share one graph call, but at
 SPAM's sizes (≈124 tokens, d = 128) onnxruntime's intra-op threads mostly wait on each other
 (measured on this machine, one base step: 9.3 ms batched on one thread, 8.4 ms on two, 6.9 ms
-as two one-thread sessions run concurrently). So each transformer gets a twin session and the
-unconditional pass runs on a worker thread while the conditional one runs on the caller's
-(onnxruntime releases the GIL while it computes).
+as two one-thread sessions run concurrently). So SPAM's base transformer gets a twin session
+and the unconditional pass runs on a worker thread while the conditional one runs on the
+caller's (onnxruntime releases the GIL while it computes). Not the residual transformer: with
+int8 weights each session quantizes its own activations, and at guidance scale 5 the passes'
+uncorrelated rounding showed as jitter (see `SpamRuntime.load`).
 
     pair = GuidedPair(graph)                    # graph: an OnnxGraph of one transformer
     cond, uncond = pair.both(cond_feeds, uncond_feeds)
