@@ -37,7 +37,8 @@ export function PlanPanel() {
     <section className="panel" aria-labelledby="plan-title" data-testid="plan">
       <h2 id="plan-title">Agent timeline</h2>
       {!segments.length ? (
-        <p className="muted small">The plan and each review round appear here while a motion generates.</p>
+        // a version with no segments of its own (a reactor pair) says what it is below instead
+        !s.edit && <p className="muted small">The plan and each review round appear here while a motion generates.</p>
       ) : (
         <ol className="plan__segments">
           {segments.map((seg, i) => (
