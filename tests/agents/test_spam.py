@@ -180,6 +180,13 @@ def test_onnx_graphs_generate_and_guide_side_by_side_as_batched(onnx_rt):
         assert a.shape == (4, 12, k) and np.allclose(a, b, atol=1e-3), np.abs(a - b).max()
         cond_only = side._guided(name, text, 1.0)(*args)
         assert not np.allclose(cond_only, a, atol=1e-2)       # the guidance did something
+    # a first step (all [MASK]) reuses one unconditional pass for every prompt
+    blank = np.full((4, 12), side.config.mask_id)
+    for prompt in ("a person waves", "a person jumps"):
+        t = side.text_embedding(prompt)
+        a, b = (rt._guided("base", t, 4.0)(blank) for rt in (side, batched))
+        assert np.allclose(a, b, atol=1e-3), np.abs(a - b).max()
+    assert list(side._blank) == [12]
 
 
 @pytest.mark.parametrize("which", ["stub", "onnx"])

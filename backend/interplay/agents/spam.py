@@ -69,6 +69,7 @@ class SpamRuntime:
         # Transformers whose guided passes run side by side (`guided_pair`); the others batch
         # the conditional and unconditional passes into one call.
         self.pairs = dict(pairs or {})
+        self._blank: dict[int, np.ndarray] = {}    # n → unconditional logits of all-[MASK]
         self._encoder = encoder
         # Generated bodies hover and their planted feet slide (floating and foot skating in
         # docs/eval.md): generation puts each stretch on the floor and holds planted feet with
@@ -142,8 +143,11 @@ class SpamRuntime:
             return cond_only
         if pair is not None:
             def side_by_side(tokens, *extra):
-                cond, uncond = pair.both(feeds(tokens[None], *extra, text[None], one),
-                                         feeds(tokens[None], *extra, text[None], zero))
+                first = feeds(tokens[None], *extra, text[None], one)
+                if name == "base" and (tokens == self.config.mask_id).all():
+                    return md.guided(graph(**first)[0], self._blank_uncond(pair, tokens.shape[-1]),
+                                     scale)
+                cond, uncond = pair.both(first, feeds(tokens[None], *extra, text[None], zero))
                 return md.guided(cond[0], uncond[0], scale)
             return side_by_side
 
@@ -152,6 +156,18 @@ class SpamRuntime:
                                 np.array([1.0, 0.0], np.float32)))
             return md.guided(out[0], out[1], scale)
         return batched
+
+    def _blank_uncond(self, pair: GuidedPair, n: int) -> np.ndarray:
+        """Unconditional base logits (4, n, K) of n all-[MASK] steps: the unconditional pass
+        sees no text, so generation's first step is the same for every prompt and needs only
+        its conditional pass (kept per n, computed on the twin session as `both` would)."""
+        got = self._blank.get(n)
+        if got is None:
+            tokens = np.full((1, len(PARTS), n), self.config.mask_id, np.int64)
+            text = np.zeros((1, len(PARTS), self.config.text_dim), np.float32)
+            got = self._blank[n] = pair.twin(**self._base_feeds(tokens, text,
+                                                                np.zeros(1, np.float32)))[0]
+        return got
 
     # -- text and codes ----------------------------------------------------------------------
     @property
