@@ -299,7 +299,7 @@ def test_generated_feet_are_held_where_planted_on_fixed_bones():
     """The shipped runtime puts the body on the floor and holds planted feet (leg IK); the same
     seed without it hovers and slides. Bones keep their lengths, the stretch's first and last
     frame is untouched, and a long motion of several pieces has no jump where pieces meet."""
-    from interplay.agents.footlock import ground, lock_feet
+    from interplay.agents.footlock import MAX_SHIFT_STEP, ground, lock_feet
     from interplay.motion.metrics import clip_metrics
     free, held = SpamRuntime.load(foot_lock=False), SpamRuntime.load()
     skate = []
@@ -310,6 +310,10 @@ def test_generated_feet_are_held_where_planted_on_fixed_bones():
         assert np.abs(a[-1] - b[-1]).max() < 1e-3          # a stretch end: nothing moved
         bone = lambda x: np.linalg.norm(x[:, 1:] - x[:, sk.PARENTS[1:]], axis=-1)  # noqa: E731
         assert np.abs(bone(b) - bone(a)).max() < 1e-9
+        # holding a foot never yanks the body: the pelvis moves per frame at most the free
+        # motion's most plus the whole-body shift's rate (seed 0 jumped 0.27 m in a frame)
+        step = lambda x: np.linalg.norm(np.diff(x[:, sk.PELVIS][:, [0, 2]], axis=0), axis=1)  # noqa: E731
+        assert step(b).max() <= step(a).max() + 2 * MAX_SHIFT_STEP, (step(b).max(), step(a).max())
         ma, mb = clip_metrics([a]), clip_metrics([b])
         skate.append((ma["foot_skating"], mb["foot_skating"], ma["floating"], mb["floating"]))
     skate_before, skate_after, float_before, float_after = np.mean(skate, axis=0)

@@ -24,6 +24,11 @@ from ..motion.signals import runs, smooth
 
 REACH = 0.995     # share of a leg's length (thigh + shin) the IK may stretch to
 MAX_SHIFT = 0.15  # m: the largest whole-body shift used to bring a foot within reach
+# m per frame: how fast that shift may change (0.3 m/s at 20 fps). Unlimited, a foot held far
+# behind a body that walked on pulled the body back within two frames: SPAM's walks jumped by
+# up to 0.27 m in a frame (the pelvis moves ~0.04 m per frame). Where the shift cannot follow,
+# the ankle stops on the line towards its goal (two_bone_ik) and the foot slides a little.
+MAX_SHIFT_STEP = 0.015
 # (hip, knee, ankle, toe) of each leg, left then right.
 LEGS = tuple(tuple(sk.JOINT_INDEX[f"{side}_{j}"] for j in ("hip", "knee", "ankle", "foot"))
              for side in ("left", "right"))
@@ -102,10 +107,27 @@ def two_bone_ik(hip: np.ndarray, knee: np.ndarray, target: np.ndarray, thigh: np
     return new_knee, hip + reach[:, None] * dhat
 
 
+def rate_limited(x: np.ndarray, step: float) -> np.ndarray:
+    """x (T, D) with every frame-to-frame change at most `step` long, staying as close to x as
+    a forward then a backward sweep allow (each sweep only shortens changes; the backward one
+    keeps the forward one's bound)."""
+    out = np.array(x, dtype=np.float64)
+    for order in (range(1, len(out)), range(len(out) - 2, -1, -1)):
+        for i in order:
+            prev = out[i - 1] if order.step == 1 else out[i + 1]
+            d = out[i] - prev
+            n = np.linalg.norm(d)
+            if n > step:
+                out[i] = prev + d * (step / n)
+    return out
+
+
 def _root_shift(hips: np.ndarray, goals: np.ndarray, reach: np.ndarray) -> np.ndarray:
     """XZ shift (T, 2) of the whole body bringing ankle goals (T, 2 legs, 3) within reach
     (T, 2) of the hips (T, 2, 3): a few rounds of stepping towards the goals that are too far,
-    averaged over 3 frames so the body does not jerk, capped at MAX_SHIFT."""
+    averaged over 3 frames, capped at MAX_SHIFT, and changing by at most MAX_SHIFT_STEP a frame
+    so the body never jerks; none on the first and last frame (stretches treated one by one
+    still meet), growing from there at that rate at most."""
     shift = np.zeros((len(hips), 2))
     for _ in range(10):
         d = goals - hips
@@ -116,7 +138,10 @@ def _root_shift(hips: np.ndarray, goals: np.ndarray, reach: np.ndarray) -> np.nd
         shift += smooth((excess[..., None] * flat).sum(axis=1), 3)
         norm = np.linalg.norm(shift, axis=1, keepdims=True)
         shift *= np.minimum(1.0, MAX_SHIFT / np.maximum(norm, 1e-9))
-    return shift
+    t = len(shift)
+    room = MAX_SHIFT_STEP * np.minimum(np.arange(t), np.arange(t)[::-1])[:, None]   # (T, 1)
+    shift *= np.minimum(1.0, room / np.maximum(np.linalg.norm(shift, axis=1, keepdims=True), 1e-9))
+    return rate_limited(shift, MAX_SHIFT_STEP)
 
 
 def pin_feet(original: np.ndarray, mapped: np.ndarray, turn: np.ndarray, fps: float = sk.FPS,
