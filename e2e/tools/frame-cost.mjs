@@ -7,7 +7,9 @@
 //     [--seconds 6] [--repeat 3] [--size 1280x720] [--threads] [--css "<extra CSS>"] "?quality=light" "?quality=light&dynres=0"
 //
 // One JSON line per run: fps (frames rendered), rafFps (refreshes the page got), CPU ms per
-// rendered frame in all (gpu + renderer + browser) and per process, the render scale at the end;
+// rendered frame in all (gpu + renderer + browser) and per process, the render scale at the end,
+// the percentiles of the interval between refreshes (requestAnimationFrame times; 16.7 ms at
+// 60 Hz) and `missed`: the share of intervals over 20 ms (a refresh went by without a frame);
 // --threads adds the GPU and renderer processes' threads (SwiftShader's workers are Thread<n>).
 //
 // Needs a running `interplay serve` (the motion must be stored there). Run under the CPU lock.
@@ -53,8 +55,12 @@ for (let r = 0; r < repeat; r++) {
       const r0 = h.renderCount;
       let raf = 0;
       let on = true;
-      const count = () => {
+      let last = -1;
+      const gaps = [];
+      const count = (t) => {
         raf++;
+        if (last >= 0) gaps.push(t - last);
+        last = t;
         if (on) requestAnimationFrame(count);
       };
       requestAnimationFrame(count);
@@ -62,7 +68,11 @@ for (let r = 0; r < repeat; r++) {
       await new Promise((ok) => setTimeout(ok, ms));
       on = false;
       const dt = performance.now() - t0;
-      return { dt, renders: h.renderCount - r0, raf, scale: h.renderScale ?? null };
+      gaps.sort((a, b) => a - b);
+      const pct = (p) => +(gaps[Math.min(gaps.length - 1, Math.floor((p / 100) * gaps.length))] ?? 0).toFixed(1);
+      // a refresh interval over 20 ms means at least one 60 Hz refresh went by without a frame
+      const over = +(gaps.filter((g) => g > 20).length / Math.max(1, gaps.length)).toFixed(3);
+      return { dt, renders: h.renderCount - r0, raf, scale: h.renderScale ?? null, p50: pct(50), p95: pct(95), p99: pct(99), over };
     }, seconds * 1000);
     const c1 = chromiumCpu(process.pid, threads);
     const cpu = perFrame(c0, c1, m.renders);
@@ -75,6 +85,8 @@ for (let r = 0; r < repeat; r++) {
       renderer: cpu.per.renderer ?? 0,
       browser: cpu.per.browser ?? 0,
       scale: m.scale,
+      intervalMs: { p50: m.p50, p95: m.p95, p99: m.p99 },
+      missed: m.over,
     };
     if (threads) {
       row.threads = Object.fromEntries(

@@ -37,6 +37,22 @@ describe("Mannequin (one merged mesh)", () => {
     m.dispose();
   });
 
+  it("light quality: under 1,000 shared vertices per person, still picking joint and bone", () => {
+    // (shadowMap on: no blob shadows, which need a canvas; the tessellation is light quality's)
+    const m = new Mannequin(skeleton, 0, { ...QUALITY.light, shadowMap: true });
+    m.setPose(rest, new Set(), new Set());
+    const geometry = (m.pickable[0] as THREE.Mesh).geometry;
+    expect(geometry.getAttribute("position").count).toBeLessThan(1000);
+    const [x, y] = [rest[3 * LEFT_ELBOW], rest[3 * LEFT_ELBOW + 1]];
+    expect(pickAt(m, x, y)).toBe(LEFT_ELBOW);
+    const mid = [0, 1].map((k) => (rest[3 * LEFT_ELBOW + k] + rest[3 * LEFT_WRIST + k]) / 2);
+    expect(pickAt(m, mid[0], mid[1])).toBe(LEFT_WRIST);
+    // every vertex's normal is a unit vector (welding kept the shapes' normals)
+    const n = geometry.getAttribute("normal");
+    for (let k = 0; k < n.count; k += 7) expect(Math.hypot(n.getX(k), n.getY(k), n.getZ(k))).toBeCloseTo(1, 3);
+    m.dispose();
+  });
+
   it("paints hovered joints, contact joints and penetrating bones per instance", () => {
     const m = new Mannequin(skeleton, 1, QUALITY.full);
     m.hovered = new Set([LEFT_ELBOW]);
@@ -56,10 +72,13 @@ describe("Mannequin (one merged mesh)", () => {
 describe("debug flags", () => {
   it("reads ?hide= and ?pixelRatio=, ignoring bad values", () => {
     expect(debugFlags("?hide=ground,people&pixelRatio=0.5")).toEqual({
-      hide: new Set(["ground", "people"]), pixelRatio: 0.5, dynamicResolution: false, alpha: false,
+      hide: new Set(["ground", "people"]), pixelRatio: 0.5, dynamicResolution: false, alpha: false, tess: null,
     });
-    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false });
-    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false });
+    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false, tess: null });
+    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false, tess: null });
+    expect(debugFlags("?tess=8x6,8,6x4,6").tess).toEqual([8, 6, 8, 6, 4, 6]);
+    expect(debugFlags("?tess=old").tess).toBe("old");
+    expect(debugFlags("?tess=8x6,8").tess).toBeNull();
     expect(debugFlags("?dynres=0&alpha=1")).toMatchObject({ dynamicResolution: false, alpha: true });
   });
 });

@@ -8,7 +8,7 @@ import type { Skeleton } from "../api/types";
 import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
 import { blobMap } from "./blobShadow";
 import { QUALITY, type QualitySettings } from "./quality";
-import { BodyMesh } from "./bodyMesh";
+import { BodyMesh, weldedShape } from "./bodyMesh";
 
 // Capsule radius (m) of the bone ending at a joint, by joint name.
 const BONE_RADIUS: [RegExp, number][] = [
@@ -45,6 +45,8 @@ export class Mannequin {
   /** Joints of the selected / hovered body part (click to edit), painted on top of part colours. */
   selected = new Set<number>();
   hovered = new Set<number>();
+  /** Whether a pose was set (the mesh has vertices in place). */
+  posed = false;
   private readonly bonePairs: [number, number][];
   private readonly boneRadii: number[];
   private readonly jointRadii: number[];
@@ -70,20 +72,32 @@ export class Mannequin {
       return name === "head" ? HEAD_RADIUS : Math.max(0.03, ...adjacent) * 1.04;
     });
     // unit shapes, scaled per piece: a cylinder of radius 1 and length 1 along y (open: the
-    // joint spheres cover its ends), a sphere of radius 1; bones first, then joints
-    const cylinder = new THREE.CylinderGeometry(1, 1, 1, quality.capsule[1], 1, true);
-    const sphere = new THREE.SphereGeometry(1, ...quality.sphere);
+    // joint spheres cover its ends), a sphere of radius 1; bones first, then joints. Thin pieces
+    // (a few pixels wide on screen) take the coarser shapes of `quality.small`.
+    const shape = (g: THREE.BufferGeometry) => (quality.weld ? weldedShape(g) : g);
+    const cylinder = shape(new THREE.CylinderGeometry(1, 1, 1, quality.capsule[1], 1, true));
+    const sphere = shape(new THREE.SphereGeometry(1, ...quality.sphere));
+    const thinCylinder = shape(new THREE.CylinderGeometry(1, 1, 1, quality.small.radial, 1, true));
+    const thinSphere = shape(new THREE.SphereGeometry(1, ...quality.small.sphere));
+    const thin = (r: number) => r < quality.small.radius;
     const lighter = (c: string) => "#" + new THREE.Color(c).lerp(new THREE.Color("#ffffff"), 0.18).getHexString();
     this.body = new BodyMesh(
       [
-        ...this.bonePairs.map(([child]) => ({ shape: cylinder, joint: child, colour: colours[child] })),
-        ...skeleton.joints.map((_, j) => ({ shape: sphere, joint: j, colour: lighter(colours[j]) })),
+        ...this.bonePairs.map(([child], i) => ({
+          shape: thin(this.boneRadii[i]) ? thinCylinder : cylinder,
+          joint: child,
+          colour: colours[child],
+        })),
+        ...skeleton.joints.map((_, j) => ({
+          shape: thin(this.jointRadii[j]) ? thinSphere : sphere,
+          joint: j,
+          colour: lighter(colours[j]),
+        })),
       ],
       quality,
       { person },
     );
-    cylinder.dispose();
-    sphere.dispose();
+    for (const g of [cylinder, sphere, thinCylinder, thinSphere]) g.dispose();
     this.group.add(this.body.mesh);
     if (!quality.shadowMap) {
       for (const [name, size] of BLOBS) {
@@ -130,6 +144,7 @@ export class Mannequin {
       body.paint(this.sphereOf(j), contact ? CONTACT_COLOUR : this.pickColour(j), 0.7);
     }
     body.posed();
+    this.posed = true;
     for (const { joint, mesh, mat } of this.blobs) {
       const y = joints[3 * joint + 1];
       mesh.position.set(joints[3 * joint], 0.003, joints[3 * joint + 2]);

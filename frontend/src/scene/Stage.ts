@@ -14,6 +14,14 @@ import { debugFlags } from "./debugFlags";
 
 const BACKGROUND = "#14161b";
 
+/** The quality's body tessellation replaced by `?tess=` (debugFlags.ts), for profiling. */
+function withTessellation(q: QualitySettings, tess: "old" | number[] | null): QualitySettings {
+  if (tess === "old") return { ...q, weld: false, small: { ...q.small, radius: 0 } };
+  if (!tess) return q;
+  const [w, h, r, sw, sh, sr] = tess;
+  return { ...q, sphere: [w, h], capsule: [q.capsule[0], r], small: { radius: q.small.radius || 0.055, radial: sr, sphere: [sw, sh] } };
+}
+
 export class Stage {
   readonly renderer: THREE.WebGLRenderer;
   readonly scene = new THREE.Scene();
@@ -38,7 +46,7 @@ export class Stage {
     readonly canvas: HTMLCanvasElement,
     readonly quality: Quality = "full",
   ) {
-    const settings = QUALITY[quality];
+    const settings = withTessellation(QUALITY[quality], this.debug.tess);
     this.settings = settings;
     // An opaque canvas (the scene always clears to its background), so the compositor need not
     // blend it with the page, and no drawing buffer kept between frames. three (r187) asks for
@@ -206,6 +214,7 @@ export class Stage {
    * (playback between samples; highlights are frame t's) — and follow them with the camera. */
   pose(skeleton: Skeleton, buffer: FrameBuffer, t: number, next = t, weight = 0): void {
     this.mannequins.forEach((m, p) => {
+      if (this.debug.hide.has("poses") && m.posed) return; // profiling: no vertex uploads
       let joints = buffer.frame(p, t);
       if (weight > 0 && next !== t) {
         const b = buffer.frame(p, next);

@@ -6,6 +6,7 @@
 // (its piece's colour: part, highlight) and glow (bodyMaterial.ts); `vertexJoint` tells picking
 // which joint (a bone: its child joint) a hit vertex stands for.
 import * as THREE from "three";
+import { mergeVertices } from "three/examples/jsm/utils/BufferGeometryUtils.js";
 import { standardGlowMaterial, vertexLitMaterial } from "./bodyMaterial";
 import type { QualitySettings } from "./quality";
 
@@ -17,6 +18,16 @@ export interface Piece {
 }
 
 const SCRATCH = new THREE.Color();
+
+/** A unit shape with the vertices at its seam and poles shared: three's sphere repeats its seam
+ * column and each pole once per segment (an 8×6 sphere: 63 vertices, 42 distinct), its cylinder
+ * the seam. Positions and normals there are equal, so the look is the same; the uvs go (unused). */
+export function weldedShape(g: THREE.BufferGeometry): THREE.BufferGeometry {
+  g.deleteAttribute("uv");
+  const welded = mergeVertices(g, 1e-4);
+  g.dispose();
+  return welded;
+}
 
 export class BodyMesh {
   readonly mesh: THREE.Mesh;

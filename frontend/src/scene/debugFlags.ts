@@ -1,13 +1,19 @@
 // Profiling switches from the query string, to see what a rendered frame costs part by part:
-// `?hide=ground,people,blobs,path` leaves scene parts out, `?pixelRatio=0.5` overrides the
+// `?hide=ground,people,blobs,path` leaves scene parts out (`poses`: the bodies keep their first
+// pose, so no vertex uploads), `?pixelRatio=0.5` overrides the
 // quality's pixel ratio (and fixes it: no dynamic resolution), `?dynres=0` turns the light
-// quality's dynamic resolution off, `?alpha=1` asks for a canvas with an alpha channel. Nothing in the studio sets them; the perf notes in docs/studio.md do.
+// quality's dynamic resolution off, `?alpha=1` asks for a canvas with an alpha channel, `?tess=8x6,8,6x4,6` sets the body's tessellation (sphere,
+// cylinder sides, thin pieces' sphere and sides; `?tess=old` the light quality's before the
+// thin-piece shapes and welding). Nothing in the studio sets them; the perf notes in
+// docs/studio.md do.
 
 export interface DebugFlags {
   hide: Set<string>;
   pixelRatio: number | null;
   dynamicResolution: boolean;
   alpha: boolean;
+  /** Body tessellation override: "old", or [sphere w, h, cylinder sides, thin sphere w, h, thin sides]. */
+  tess: "old" | number[] | null;
 }
 
 export function debugFlags(search: string = typeof window === "undefined" ? "" : window.location.search): DebugFlags {
@@ -15,5 +21,8 @@ export function debugFlags(search: string = typeof window === "undefined" ? "" :
   const hide = new Set((q.get("hide") ?? "").split(",").map((s) => s.trim()).filter(Boolean));
   const pr = Number(q.get("pixelRatio"));
   const pixelRatio = Number.isFinite(pr) && pr > 0 && pr <= 4 ? pr : null;
-  return { hide, pixelRatio, dynamicResolution: pixelRatio === null && q.get("dynres") !== "0", alpha: q.get("alpha") === "1" };
+  const t = q.get("tess");
+  const nums = (t ?? "").split(/[x,]/).map(Number);
+  const tess = t === "old" ? "old" : nums.length === 6 && nums.every((n) => Number.isInteger(n) && n >= 2 && n <= 64) ? nums : null;
+  return { hide, pixelRatio, dynamicResolution: pixelRatio === null && q.get("dynres") !== "0", alpha: q.get("alpha") === "1", tess };
 }

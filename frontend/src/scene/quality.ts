@@ -11,6 +11,11 @@ export interface QualitySettings {
   /** Tessellation: capsule [cap segments, radial segments], sphere [width, height segments]. */
   capsule: [number, number];
   sphere: [number, number];
+  /** Pieces thinner than `radius` (m; wrists, elbows, ankles, feet, neck, collars, shoulders):
+   * a coarser cylinder (`radial` sides) and sphere. */
+  small: { radius: number; radial: number; sphere: [number, number] };
+  /** Share the vertices at the shapes' seams and poles (same look, fewer vertices). */
+  weld: boolean;
   /** The floor grid as line segments (LineGround) rather than a per-pixel shader (Ground). */
   gridLines: boolean;
   /** Hold the display's rate by lowering / raising the pixel ratio (resolution.ts). */
@@ -18,8 +23,8 @@ export interface QualitySettings {
 }
 
 export const QUALITY: Record<Quality, QualitySettings> = {
-  full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12], gridLines: false, dynamicResolution: false },
-  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [8, 6], gridLines: true, dynamicResolution: true },
+  full: { antialias: true, shadowMap: true, maxPixelRatio: 2, capsule: [4, 12], sphere: [16, 12], small: { radius: 0, radial: 12, sphere: [16, 12] }, weld: true, gridLines: false, dynamicResolution: false },
+  light: { antialias: false, shadowMap: false, maxPixelRatio: 0.75, capsule: [2, 8], sphere: [8, 6], small: { radius: 0.055, radial: 6, sphere: [6, 4] }, weld: true, gridLines: true, dynamicResolution: true },
 };
 
 const SOFTWARE = /swiftshader|llvmpipe|softpipe|software|basic render/i;
