@@ -13,6 +13,7 @@ import { loadavg } from "node:os";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { openStudio, startGeneration, waitDone } from "./studio";
+import { samplePlayback } from "../tools/playback-sample.mjs";
 import { chromiumCpu, perFrame } from "../tools/proc-cpu.mjs";
 
 test.use({ trace: "off" });
@@ -52,38 +53,16 @@ interface Playback {
  * browser's CPU time per rendered frame (/proc of the processes this worker launched). */
 async function playbackFps(page: Page, ms = 4000): Promise<Playback> {
   const c0 = chromiumCpu();
-  const m = await page.evaluate(async (ms) => {
-    const h = window.__interplay;
-    const r0 = h.renderCount;
-    let raf = 0;
-    let on = true;
-    let last = -1;
-    const gaps: number[] = [];
-    const count = (t: number) => {
-      raf++;
-      if (last >= 0) gaps.push(t - last);
-      last = t;
-      if (on) requestAnimationFrame(count);
-    };
-    requestAnimationFrame(count);
-    const t0 = performance.now();
-    await new Promise((ok) => setTimeout(ok, ms));
-    on = false;
-    const dt = performance.now() - t0;
-    gaps.sort((a, b) => a - b);
-    const pct = (p: number) => +(gaps[Math.min(gaps.length - 1, Math.floor((p / 100) * gaps.length))] ?? 0).toFixed(1);
-    const missed = +(gaps.filter((g) => g > 20).length / Math.max(1, gaps.length)).toFixed(3);
-    return { dt, n: h.renderCount - r0, raf, scale: h.renderScale, intervalMs: { p50: pct(50), p95: pct(95), p99: pct(99) }, missed };
-  }, ms);
-  const cpu = perFrame(c0, chromiumCpu(), m.n);
+  const m = await page.evaluate(samplePlayback, ms);
+  const cpu = perFrame(c0, chromiumCpu(), m.renders);
   return {
-    fps: (m.n * 1000) / m.dt,
-    frameMs: m.dt / Math.max(1, m.n),
+    fps: (m.renders * 1000) / m.dt,
+    frameMs: m.dt / Math.max(1, m.renders),
     rafFps: (m.raf * 1000) / m.dt,
     cpuMsPerFrame: cpu.total,
     gpuMsPerFrame: cpu.per.gpu ?? 0,
     rendererMsPerFrame: cpu.per.renderer ?? 0,
-    renderScale: m.scale,
+    renderScale: m.scale ?? 0,
     intervalMs: m.intervalMs,
     missed: m.missed,
   };

@@ -14,6 +14,7 @@
 //
 // Needs a running `interplay serve` (the motion must be stored there). Run under the CPU lock.
 import { chromium } from "@playwright/test";
+import { samplePlayback } from "./playback-sample.mjs";
 import { chromiumCpu, perFrame } from "./proc-cpu.mjs";
 
 const args = process.argv.slice(2);
@@ -50,30 +51,7 @@ for (let r = 0; r < repeat; r++) {
     if (css) await page.addStyleTag({ content: css });
     await page.waitForTimeout(1000);
     const c0 = chromiumCpu(process.pid, threads);
-    const m = await page.evaluate(async (ms) => {
-      const h = window.__interplay;
-      const r0 = h.renderCount;
-      let raf = 0;
-      let on = true;
-      let last = -1;
-      const gaps = [];
-      const count = (t) => {
-        raf++;
-        if (last >= 0) gaps.push(t - last);
-        last = t;
-        if (on) requestAnimationFrame(count);
-      };
-      requestAnimationFrame(count);
-      const t0 = performance.now();
-      await new Promise((ok) => setTimeout(ok, ms));
-      on = false;
-      const dt = performance.now() - t0;
-      gaps.sort((a, b) => a - b);
-      const pct = (p) => +(gaps[Math.min(gaps.length - 1, Math.floor((p / 100) * gaps.length))] ?? 0).toFixed(1);
-      // a refresh interval over 20 ms means at least one 60 Hz refresh went by without a frame
-      const over = +(gaps.filter((g) => g > 20).length / Math.max(1, gaps.length)).toFixed(3);
-      return { dt, renders: h.renderCount - r0, raf, scale: h.renderScale ?? null, p50: pct(50), p95: pct(95), p99: pct(99), over };
-    }, seconds * 1000);
+    const m = await page.evaluate(samplePlayback, seconds * 1000);
     const c1 = chromiumCpu(process.pid, threads);
     const cpu = perFrame(c0, c1, m.renders);
     const row = {
@@ -85,8 +63,8 @@ for (let r = 0; r < repeat; r++) {
       renderer: cpu.per.renderer ?? 0,
       browser: cpu.per.browser ?? 0,
       scale: m.scale,
-      intervalMs: { p50: m.p50, p95: m.p95, p99: m.p99 },
-      missed: m.over,
+      intervalMs: m.intervalMs,
+      missed: m.missed,
     };
     if (threads) {
       row.threads = Object.fromEntries(
