@@ -33,7 +33,7 @@ from ..motion import skeleton as sk
 from ..motion.ik import reach, two_bone_ik, window_weights
 from ..motion.metrics import pair_geometry
 from ..motion.signals import runs, smooth
-from .contact_kinds import (HAND_EXT, KINDS, POLES, TIMING, Reach, candidates, contact_kind,
+from .contact_kinds import (HAND_EXT, KINDS, POLES, TIMING, Reach, candidates,
                             hand_centre, hand_radius)
 
 MAX_APPROACH = 0.6         # m the two people may move towards each other in total
@@ -282,10 +282,3 @@ def refine_contact(joints_a: np.ndarray, joints_b: np.ndarray, kind: str | None,
         return a, b, report
     report["reason"] = reasons[0] if len(set(reasons)) == 1 else "; ".join(dict.fromkeys(reasons))
     return a0, b0, report
-
-
-def refine_pair(pair: np.ndarray, prompt: str, free_start: bool = True, free_end: bool = True
-                ) -> tuple[np.ndarray, dict]:
-    """pair (2, T, 22, 3) refined for the contact its prompt asks for (`contact_kind`)."""
-    a, b, report = refine_contact(pair[0], pair[1], contact_kind(prompt), free_start, free_end)
-    return np.stack([a, b]), report

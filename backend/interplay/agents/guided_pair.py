@@ -40,6 +40,3 @@ class GuidedPair:
         finally:
             other = later.result()   # never leave the worker's result (or error) behind
         return out, other
-
-    def close(self) -> None:
-        self._pool.shutdown(wait=False)

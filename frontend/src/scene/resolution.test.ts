@@ -15,6 +15,13 @@ function feed(c: ResolutionController, ms: number, n: number): number[] {
   return out;
 }
 
+/** Frames of `ms` fed before the one that changes the scale (unbounded: the caller expects one). */
+function framesBeforeChange(c: ResolutionController, ms: number): number {
+  let k = 0;
+  while (c.sample(ms) === null) k++;
+  return k;
+}
+
 describe("ResolutionController", () => {
   it("starts at the policy's start level", () => {
     expect(new ResolutionController(policy).scale).toBe(0.75);
@@ -86,8 +93,7 @@ describe("ResolutionController", () => {
     expect(c.scale).toBe(0.875);
     c.sample(1000); // a pause between the two (the window starts again)
     // back at the rate: up again after the settle frames and the base calm (2 windows), not 4
-    let k = 0;
-    while (c.sample(AT_RATE) === null) k++;
+    const k = framesBeforeChange(c, AT_RATE);
     expect(c.scale).toBe(1);
     expect(k).toBe(3 + 2 * 10 - 1);
   });
@@ -97,8 +103,7 @@ describe("ResolutionController", () => {
     feed(c, AT_RATE, 20); // probe → 0.875
     feed(c, SLOW, 3 + 10); // slow right after: failed, back to 0.75, calm needed 4
     expect(c.scale).toBe(0.75);
-    let k = 0;
-    while (c.sample(AT_RATE) === null) k++;
+    const k = framesBeforeChange(c, AT_RATE);
     expect(c.scale).toBe(0.875);
     expect(k).toBe(3 + 4 * 10 - 1);
   });
