@@ -54,7 +54,7 @@ def write_card(weights: Path, ckpt_dir: Path) -> Path:
         f"shared 2-core CPU; best validation loss {summary['best_val']:.4f} "
         f"(first training batch {summary['first_loss']:.3f}, last {summary['last_loss']:.3f}).",
         "", "Made by `python -m models.arflow.train` (part of `make train`), which exports with "
-        "`models/arflow/export.py`.", "", "## Sampling (runtime `interplay.agents.reaction`)", "",
+        "`models/arflow/export.py`.", "", "## Sampling (runtime `interplay.reaction.session`)", "",
         f"Defaults in config.json: {json.dumps(config['sampling'])}.",
         "Euler x-prediction steps; penetration guidance (sphere-body SDF loss with safe "
         "distance) on the predicted clean pose, then reprojection with weight γ between the "

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion.clip import default_clips
-from interplay.motion.pairs import pair_windows
+from interplay.motion.pair.windows import pair_windows
 
 from .config import POSE_DIM
 

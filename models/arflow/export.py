@@ -1,4 +1,4 @@
-"""Export ARFlow to ONNX for the numpy/onnxruntime runtime (`interplay.agents.reaction` reads
+"""Export ARFlow to ONNX for the numpy/onnxruntime runtime (`interplay.reaction.session` reads
 this contract; keep names, dtypes and axes):
 
   arflow.onnx  x_t (B, T, 66) f32 normalised flow state, t (B,) f32 flow time in [0, 1],

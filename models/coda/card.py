@@ -128,7 +128,7 @@ def write_cards(n: dict, weights: Path) -> None:
         "λ_COM = 1 (eq. 4, COM = joint mean), λ_KTraj = 1 (eq. 5, pelvis/wrists/toes), "
         "λ_GDM = 0.5 (eq. 6, τ = 0.5, every 2nd frame), λ_PPL = 0.01 (eq. 7, 4×4 part-chain "
         "pairs, predicted-pair AABB overlap, every 8th frame), geometric: velocity 1, foot "
-        "contact 1, bone length 1. The torch terms equal `interplay.motion.interaction`'s numpy "
+        "contact 1, bone length 1. The torch terms equal `interplay.motion.pair.interaction`'s numpy "
         "ones (tests/models/test_coda_losses.py).", "",
         "## Training", "",
         f"CPU, {n['machine']}, shared with other jobs. Budgets (s): {n['budgets_s']}. "

@@ -1,6 +1,6 @@
 """CODA's Commonsense Constraint Loss (Algorithm 1) and geometric losses in torch, on decoded
 joints (B, T, 22, 3), metres, Y up. The two-person terms mirror the numpy definitions of
-`interplay.motion.interaction` exactly (tests/models/test_coda_losses.py checks equality):
+`interplay.motion.pair.interaction` exactly (tests/models/test_coda_losses.py checks equality):
 
   com     eq. 4: (|COM − pelvis| error)² + (error of the cosine of the pelvis→COM line's
           angle to the horizontal plane)², COM = mean of the joints (the paper: mass 1 each)
@@ -18,7 +18,7 @@ import torch
 import torch.nn.functional as F
 
 from interplay.motion import skeleton as sk
-from interplay.motion.interaction import EPS, PART_BONES, TAU
+from interplay.motion.pair.interaction import EPS, PART_BONES, TAU
 
 from .config import LossConfig
 

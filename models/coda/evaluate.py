@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from interplay.motion import interaction as ia
+from interplay.motion.pair import interaction as ia
 from interplay.motion.metrics import DEFAULT, pair_geometry
 
 from .cvq import CVQVAE

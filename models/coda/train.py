@@ -149,14 +149,3 @@ def evaluate_cmt(model: CMT, codes: torch.Tensor, text: torch.Tensor, repeats: i
         ce.append(float(loss))
         acc.append(float(a))
     return {"ce": float(np.mean(ce)), "acc": float(np.mean(acc))}
-
-
-def main(argv: list[str] | None = None) -> None:
-    from .pipeline import main as pipeline_main
-    pipeline_main(argv)
-
-
-if __name__ == "__main__":
-    import sys
-
-    main(sys.argv[1:])

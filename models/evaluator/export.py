@@ -5,7 +5,7 @@
 
 Writes motion_encoder.onnx (dynamic batch and length), text_proj.npz, normalizer.npz,
 config.json, and MODEL_CARD.md with retrieval accuracy on the val and test splits measured
-through the runtime (`interplay.agents.evaluator.Evaluator`).
+through the runtime (`interplay.review.evaluator.Evaluator`).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from interplay.agents.evaluator import Evaluator as Runtime
+from interplay.review.evaluator import Evaluator as Runtime
 from interplay.eval.metrics import confidence, r_precision
 from interplay.eval.testset import split_samples
 from interplay.motion.clip import DATA_DIR, default_clips
@@ -138,7 +138,7 @@ def model_card(ckpt: dict, table: dict, onnx_error: float, params: int, out: Pat
     return f"""# Evaluator (TMR-style text–motion embedding)
 
 Used by `interplay eval` (R-precision, FID, MM-Dist, Diversity, MultiModality) and by the
-reviewer agent (`interplay.agents.evaluator.Evaluator.score`). Runtime: numpy + onnxruntime.
+reviewer agent (`interplay.review.evaluator.Evaluator.score`). Runtime: numpy + onnxruntime.
 
 ## Model
 - Motion encoder: the 239-d features of `interplay.motion.features.encode`, normalised with

@@ -26,7 +26,7 @@ def model_card(ckpt: dict, metrics: dict, params: int, out: Path) -> str:
     return f"""# Pair evaluator (text ↔ two-person motion, contrastive)
 
 Gives `interplay eval-react` (and the CODA evaluation) a learned-feature FID for two-person
-motion. Runtime: `interplay.agents.pair_evaluator.PairEvaluator` (numpy + onnxruntime):
+motion. Runtime: `interplay.review.pair_evaluator.PairEvaluator` (numpy + onnxruntime):
 `embed(windows (N, 2, L, 22, 3))` → (N, {cfg['embed_dim']}) unit rows, `embed_text(prompts)`,
 `fid(a, b)`.
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, fields
 
-from interplay.agents.pair_evaluator import PAIR_FEATURE_DIM
+from interplay.review.pair_evaluator import PAIR_FEATURE_DIM
 
 TEXT_DIM = 384             # MiniLM sentence embedding (interplay.text.encoder.DIM)
 

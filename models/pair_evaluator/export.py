@@ -5,7 +5,7 @@
 
 Writes motion_encoder.onnx (dynamic batch and length), text_proj.npz, normalizer.npz,
 config.json, metrics.json and MODEL_CARD.md with numbers measured through the runtime
-(`interplay.agents.pair_evaluator.PairEvaluator`): kind retrieval accuracy on the val and
+(`interplay.review.pair_evaluator.PairEvaluator`): kind retrieval accuracy on the val and
 test splits, and FID of real and broken pairs against the train split's real pairs.
 """
 
@@ -17,7 +17,8 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from interplay.agents.pair_evaluator import PairEvaluator, fid
+from interplay.eval.metrics import fid
+from interplay.review.pair_evaluator import PairEvaluator
 from interplay.motion.clip import default_clips
 from models.evaluator.export import export_cli, export_onnx, save_text_proj
 from models.evaluator.model import Evaluator

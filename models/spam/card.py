@@ -143,7 +143,7 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
             f"{k} = {v}" for k, v in numbers["sampling"].items()) + ".",
         "",
         "## Training time on this machine",
-        f"{numbers['machine']}; the CPU was shared with other engineers' jobs, so each stage ran "
+        f"{numbers['machine']}; the CPU was shared with other jobs, so each stage ran "
         "for its wall-clock budget (`models/spam/pipeline.py` Budgets) and the step counts below "
         "are what fitted." + (f" **Note:** {numbers['note']}." if numbers.get("note") else ""),
         "",

@@ -209,27 +209,3 @@ def evaluate_transformer(model: SPAMTransformer, batches: TokenBatches, batches_
     ce, acc = zip(*(transformer_loss(model.eval(), *batches.sample(rng, batch), gen)
                     for _ in range(batches_n)))
     return {"ce": float(np.mean(ce)), "acc": float(np.mean(acc))}
-
-
-def main(argv: list[str] | None = None) -> None:
-    import argparse
-
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--all", action="store_true", help="train and export everything")
-    ap.add_argument("--scale", type=float, default=1.0, help="multiply every time budget")
-    ap.add_argument("--resume", metavar="LOG", type=Path,
-                    help="export and document a run that trained every stage but stopped "
-                         "before its export, from its checkpoints and log (models/spam/resume.py)")
-    a = ap.parse_args(argv)
-    if a.resume:
-        from .resume import resume
-        resume(a.resume)
-        return
-    if not a.all:
-        ap.error("pass --all (train everything) or --resume LOG; stages: models/spam/pipeline.py")
-    from .pipeline import run_all
-    run_all(scale=a.scale)
-
-
-if __name__ == "__main__":
-    main()

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from interplay.agents.retrieval import RetrievalIndex
-from interplay.agents.spam import DEFAULT_DIR
-from interplay.agents.spam_generator import with_spam
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.spam.runtime import DEFAULT_DIR
+from interplay.generators.router import with_spam
 from interplay.api.app import create_app
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import default_clips

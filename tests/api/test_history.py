@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from sqlalchemy import create_engine, text
 
-from conftest import run_job
+from tests.helpers.api import run_job
 from interplay.store import MotionRepository, make_engine
 
 

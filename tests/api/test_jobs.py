@@ -8,7 +8,7 @@ import time
 
 import numpy as np
 import pytest
-from conftest import FakeGenerator, run_job
+from tests.helpers.api import FakeGenerator, run_job
 from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 

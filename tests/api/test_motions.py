@@ -8,7 +8,7 @@ import re
 
 import numpy as np
 import pytest
-from conftest import FakeGenerator, run_job
+from tests.helpers.api import FakeGenerator, run_job
 from fastapi.testclient import TestClient
 
 from interplay.api.app import create_app
@@ -66,7 +66,7 @@ def test_bvh_export_is_one_person_per_file(client, two_person, person):
     assert r.status_code == 200, r.text
     assert f"person{person}.bvh" in r.headers["content-disposition"]
     assert r.text.startswith("HIERARCHY")
-    from interplay.motion.bvh import read_bvh
+    from interplay.motion.formats.bvh import read_bvh
     bvh = read_bvh(r.text)
     joints = np.asarray(client.get(f"/api/motions/{two_person}").json()
                         ["people"][person]["joints"])

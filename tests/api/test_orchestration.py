@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from conftest import FakeGenerator, run_job
+from tests.helpers.api import FakeGenerator, run_job
 from interplay.api.app import create_app
 
 PARTS = {"body", "left_upper", "right_upper", "left_lower", "right_lower"}

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import run_job
+from tests.helpers.api import run_job
 
-from interplay.agents.reaction import WEIGHTS_DIR
+from interplay.reaction.session import WEIGHTS_DIR
 from interplay.motion.skeleton import bone_lengths
 
 needs_weights = pytest.mark.skipif(not (WEIGHTS_DIR / "arflow.onnx").exists(),

@@ -83,7 +83,7 @@ def test_confidence_interval():
 
 @pytest.fixture(scope="module")
 def test_embeddings():
-    from interplay.agents.evaluator import load_evaluator
+    from interplay.review.evaluator import load_evaluator
     from interplay.eval.testset import split_samples
     from interplay.motion.clip import default_clips
     ev = load_evaluator()

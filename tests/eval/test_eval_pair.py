@@ -7,7 +7,7 @@ import json
 
 import numpy as np
 
-from interplay.cli import main
+from interplay.cli.main import main
 from interplay.eval.pair import SCORES, pair_set, window_scores
 from interplay.eval.pair_report import contact_windows, format_table, run_eval_pair
 from interplay.motion.clip import default_clips
@@ -64,7 +64,7 @@ def test_cli_eval_pair(capsys):
 
 
 def test_coda_rows_raw_and_product_see_the_same_samples():
-    from interplay.agents.coda_graphs import DEFAULT_DIR, FILES
+    from interplay.generators.coda.files import DEFAULT_DIR, FILES
     from interplay.eval.pair import load_row
     from interplay.eval.pair_report import touches
     if not all((DEFAULT_DIR / f).is_file() for f in FILES):

@@ -5,7 +5,8 @@ import json
 import numpy as np
 import pytest
 
-from interplay import cli
+from interplay.cli import evals
+from interplay.cli import main as cli
 from interplay.eval import rows as R
 from interplay.eval.report import EvalConfig, evaluate_row, format_table
 from interplay.eval.testset import split_samples
@@ -37,7 +38,7 @@ def test_cli_eval_validation_split_and_sampling_arguments(capsys):
     test = {s.clip for s in split_samples(default_clips(), "test")}
     assert 10 < val["test_set"]["samples"] and val["config"]["split"] == "val"
     assert not test & {s.clip for s in split_samples(default_clips(), "val")}
-    assert cli._sampling_args(["cfg=2.5", "steps=5", "mode=inpaint"]) == [
+    assert evals._sampling_args(["cfg=2.5", "steps=5", "mode=inpaint"]) == [
         ("cfg", 2.5), ("steps", 5), ("mode", "inpaint")]
     assert cli.main(["eval", "--rows", "real", "--sampling", "cfg"]) == 2
     assert "KEY=VALUE" in capsys.readouterr().err

@@ -57,7 +57,7 @@ def test_loss_falls_and_onnx_matches(data, tmp_path):
     config = json.loads((out / "config.json").read_text())
     assert config["window"] == 16 and config["sampling"]["steps"] >= 1
 
-    from interplay.agents.reaction import ReactionModel, sample_windows
+    from interplay.reaction.session import ReactionModel, sample_windows
     m = ReactionModel(out)
     reactor = sample_windows(m, va.actor[:2].reshape(2, 16, 22, 3), seed=0, guidance=True)
     assert reactor.shape == (2, 16, 22, 3) and np.isfinite(reactor).all()

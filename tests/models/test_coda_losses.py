@@ -1,4 +1,4 @@
-"""CODA's torch CCL terms equal the numpy definitions in `interplay.motion.interaction` on a real
+"""CODA's torch CCL terms equal the numpy definitions in `interplay.motion.pair.interaction` on a real
 captured salsa window (GDM eq. 6, part AABB overlap, bone-to-bone chain distances, PPL eq. 7),
 and give finite gradients."""
 
@@ -9,9 +9,9 @@ import pytest
 
 torch = pytest.importorskip("torch")
 
-from interplay.motion import interaction as ia  # noqa: E402
+from interplay.motion.pair import interaction as ia  # noqa: E402
 from interplay.motion.clip import default_clips  # noqa: E402
-from interplay.motion.pairs import pair_windows  # noqa: E402
+from interplay.motion.pair.windows import pair_windows  # noqa: E402
 from models.coda import ccl  # noqa: E402
 
 

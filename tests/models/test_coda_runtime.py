@@ -13,12 +13,13 @@ import pytest
 
 pytest.importorskip("torch")
 
-from coda_tiny import export_tiny  # noqa: E402
+from tests.helpers.coda_tiny import export_tiny  # noqa: E402
 
-from interplay.agents import coda as coda_mod  # noqa: E402
-from interplay.agents.coda import CodaRuntime  # noqa: E402
-from interplay.agents.coda_generator import CodaGenerator, load_coda  # noqa: E402
-from interplay.agents.generator import Request  # noqa: E402
+from interplay.generators.coda import runtime as coda_mod  # noqa: E402
+from interplay.generators.coda.runtime import CodaRuntime  # noqa: E402
+from interplay.generators.coda.generator import CodaGenerator  # noqa: E402
+from interplay.generators.router import load_coda  # noqa: E402
+from interplay.generators.base import Request  # noqa: E402
 from interplay.motion import skeleton as sk  # noqa: E402
 from interplay.motion.kinematics import facing_angle  # noqa: E402
 from interplay.motion.metrics import bone_deviation  # noqa: E402
@@ -126,7 +127,7 @@ def test_generator_uses_coda_for_two_people_and_falls_back_with_a_reason(tiny, t
     none, why = load_coda(tmp_path / "empty")
     assert none is None and "did not load" in why
 
-    gen = CodaGenerator(index=None, spam=None, spam_reason="no SPAM here", coda=coda)
+    gen = CodaGenerator(coda)
     req = Request("two people hug, then they wave", persons=2, seconds=5, seed=9)
     plan = gen.plan(req)
     assert plan["generator"] == "coda" and len(plan["segments"]) == 2

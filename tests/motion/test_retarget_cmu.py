@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from interplay.motion import skeleton as sk
-from interplay.motion.bvh import read_bvh
+from interplay.motion.formats.bvh import read_bvh
 from interplay.motion.kinematics import facing_direction
 from interplay.motion.retarget import map_joints
 from interplay.motion.retarget.cmu_daz import (

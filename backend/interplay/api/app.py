@@ -15,37 +15,20 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
-from .. import __version__
-from ..settings import Settings, get_settings
-from ..store import MotionRepository, make_engine
-from . import stream
-from .jobs import JobManager
-from .routes import edits, jobs, motions, pages
+from interplay import __version__
+from interplay.settings import Settings, get_settings
+from interplay.store import MotionRepository, make_engine
+from interplay.api import stream
+from interplay.api.jobs import JobManager
+from interplay.pipeline.requests import readable_errors
+from interplay.api.routes import edits, jobs, motions, pages
 
 log = logging.getLogger(__name__)
 
 
 def _load_generator(settings: Settings):
-    from ..agents.generator import load_generator
+    from interplay.generators.router import load_generator
     return load_generator(settings.data_dir, settings.spam_dir, coda_dir=settings.coda_dir)
-
-
-def readable_errors(errors) -> str:
-    """Pydantic errors as one readable line, e.g. "seconds: Input should be less than or
-    equal to 20; persons: Input should be 1 or 2"."""
-    parts = []
-    for err in errors:
-        loc = [str(x) for x in err.get("loc", ()) if x not in ("body", "query", "path")]
-        msg = str(err.get("msg", "invalid value")).removeprefix("Value error, ")
-        if err.get("type") == "json_invalid":
-            why = err.get("ctx", {}).get("error", "parse error")
-            loc, msg = [], f"request body is not valid JSON ({why})"
-        elif err.get("type") == "missing" and not loc:
-            msg = "a JSON request body is required"
-        elif err.get("type") == "model_attributes_type":
-            msg = "request body must be a JSON object"
-        parts.append(f"{'.'.join(loc)}: {msg}" if loc else msg)
-    return "; ".join(parts) or "invalid request"
 
 
 def create_app(settings: Settings | None = None, generator=None) -> FastAPI:

@@ -5,27 +5,27 @@ Events, in order (see docs/api.md and docs/review.md):
     plan → (segment, (frames, highlights)*, review, correction*, …, segment)* → metrics
     → done
     or, on failure or cancellation, … → error (with `stage`, or `cancelled: true`).
-The work itself is CoMA's Algorithm 1 in agents/orchestrator.py; this module runs it in a
-thread, turns its frames into events and stores the result.
+What a job runs is a runner (`api/runners/`): generation (CoMA's Algorithm 1 in
+`pipeline/orchestrator.py`) or a reaction.
 """
 
 from __future__ import annotations
 
 import asyncio
 import logging
-import secrets
 import threading
 import time
 from collections.abc import AsyncIterator
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
-import numpy as np
-
-from ..agents.segment_source import Cancelled  # raised by the orchestrator too
-from ..motion.skeleton import FPS, NUM_JOINTS
-from ..store import MotionRepository, new_id
-from .motion_json import joints_list, plain
+from interplay.api.events import ErrorEvent
+from interplay.api.runners.generate import GenerateRunner
+from interplay.api.runners.react import react_job
+from interplay.motion.skeleton import FPS
+from interplay.pipeline.orchestrator import StageError
+from interplay.pipeline.segment_source import Cancelled  # raised by the orchestrator too
+from interplay.store import MotionRepository, new_id
 
 log = logging.getLogger(__name__)
 TERMINAL = ("done", "error")
@@ -108,26 +108,6 @@ class Job:
                 self._waiters.discard(key)
 
 
-def make_request(prompt: str, persons: int, seconds: float, seed: int):
-    """The generator's `Request` for a job (the CLI builds the same)."""
-    from ..agents.generator import Request
-    return Request(prompt=prompt, persons=persons, seconds=seconds, seed=seed)
-
-
-def _highlights_event(start: int, window: list[np.ndarray], skip: int, persons: int) -> dict:
-    """Per-frame highlights of `window` (the chunk with `skip` frames of context before it)."""
-    from ..motion.metrics import frame_highlights
-    h = plain(frame_highlights(window))
-    dist = h.get("min_distance")
-    return {
-        "type": "highlights", "start": start,
-        "contacts": [[[int(p), int(j)] for p, j in f] for f in h["contacts"][skip:]],
-        "penetration": [[[int(p), str(part)] for p, part in f] for f in h["penetration"][skip:]],
-        "min_distance": ([None if d is None else round(float(d), 4) for d in dist[skip:]]
-                         if persons > 1 and dist is not None else None),
-    }
-
-
 class JobManager:
     """Runs jobs on a small thread pool and keeps them (with their events) for a while."""
 
@@ -183,98 +163,26 @@ class JobManager:
                     del self._jobs[j.id]
 
     def _run(self, job: Job, generator) -> None:
-        from ..agents.orchestrator import StageError
         job.status = "running"
         try:
             if job.cancelled:
                 raise Cancelled()
             if job.spec.mode == "react":
-                from ..agents import reaction   # the reaction engineer's module
-                reaction.react_job(job, generator, self.repo)
+                react_job(job, self.repo)
             else:
-                self._generate(job, generator)
+                GenerateRunner(job, generator, self.repo, self._closing.is_set).run()
             job.status = "done"
         except Cancelled:
             job.status = "failed"
-            job.push({"type": "error", "message": "cancelled", "cancelled": True} if job.cancelled
-                     else {"type": "error", "message": "the server is shutting down"})
+            job.push(ErrorEvent(message="cancelled", cancelled=True).dump() if job.cancelled
+                     else ErrorEvent(message="the server is shutting down").dump())
         except StageError as exc:
             job.status = "failed"
-            job.push({"type": "error", "stage": exc.stage,
-                      "message": f"generation failed at {exc.stage}: {exc.reason}"})
+            job.push(ErrorEvent(stage=exc.stage,
+                                message=f"generation failed at {exc.stage}: {exc.reason}").dump())
         except Exception as exc:  # reported to the client, never raised into the pool
             log.exception("job %s failed", job.id)
             job.status = "failed"
-            job.push({"type": "error", "stage": "store",
-                      "message": f"generation failed: {exc}"})
+            job.push(ErrorEvent(stage="store", message=f"generation failed: {exc}").dump())
         finally:
             job.finished = time.monotonic()
-
-    def _generate(self, job: Job, generator) -> None:
-        from ..agents.orchestrator import StageError, default_evaluator, orchestrate
-        from ..motion.metrics import clip_metrics
-        spec = job.spec
-        req = make_request(spec.prompt, spec.persons, spec.seconds, spec.seed)
-        total = spec.frames
-        people = np.zeros((spec.persons, total, NUM_JOINTS, 3), dtype=np.float32)
-        written = 0
-        contacts: list = [[] for _ in range(total)]
-        penetration: list = [[] for _ in range(total)]
-        min_dist: list | None = [None] * total if spec.persons > 1 else None
-
-        def on_frames(start: int, chunk: list[np.ndarray]) -> None:
-            nonlocal people, written, contacts, penetration, min_dist
-            if self._closing.is_set():
-                raise Cancelled()
-            chunk = [np.asarray(c, dtype=np.float32) for c in chunk]
-            n = chunk[0].shape[0]
-            if len(chunk) != spec.persons or any(c.shape != (n, NUM_JOINTS, 3) for c in chunk):
-                raise ValueError(f"generator sent chunk shapes {[c.shape for c in chunk]} "
-                                 f"for {spec.persons} person(s)")
-            start, end = int(start), int(start) + n
-            if end > people.shape[1]:   # the generator ran longer than asked: grow
-                grow = end - people.shape[1]
-                people = np.concatenate([people, np.zeros((spec.persons, grow, NUM_JOINTS, 3),
-                                                          dtype=np.float32)], axis=1)
-                contacts += [[] for _ in range(grow)]
-                penetration += [[] for _ in range(grow)]
-                if min_dist is not None:
-                    min_dist += [None] * grow
-            people[:, start:end] = np.stack(chunk)
-            written = max(written, end)
-            # A repeated start (a corrected segment, a moved path) replaces those frames.
-            job.push({"type": "frames", "start": start, "total": max(total, written),
-                      "people": [joints_list(c) for c in chunk]})
-            # One frame of context before the chunk, so velocity-based contacts are defined.
-            ctx = 1 if start > 0 else 0
-            hl = _highlights_event(start, [p[start - ctx:end] for p in people], ctx, spec.persons)
-            job.push(hl)
-            contacts[start:end] = hl["contacts"]
-            penetration[start:end] = hl["penetration"]
-            if min_dist is not None:
-                min_dist[start:end] = hl["min_distance"]
-
-        out = orchestrate(generator, req, lambda e: job.push(plain(e)), on_frames,
-                          cancelled=lambda: job.cancelled or self._closing.is_set(),
-                          trajectory=spec.trajectory, evaluator=default_evaluator())
-        if written == 0:
-            raise StageError("generate", "the generator produced no frames")
-        final = [p[:written] for p in out.people]
-        try:
-            metrics = plain(clip_metrics([p.astype(np.float64) for p in final], fps=FPS))
-        except Exception as exc:
-            raise StageError("metrics", f"{type(exc).__name__}: {exc}") from exc
-        job.push({"type": "metrics", "metrics": metrics})
-        highlights = {"contacts": contacts[:written], "penetration": penetration[:written],
-                      "min_distance": min_dist[:written] if min_dist is not None else None}
-        try:
-            self.repo.create(id=job.motion_id, prompt=spec.prompt, people=final,
-                             seconds=spec.seconds, seed=spec.seed, plan=plain(out.plan),
-                             metrics=metrics, highlights=highlights, review=plain(out.review))
-        except Exception as exc:
-            raise StageError("store", f"{type(exc).__name__}: {exc}") from exc
-        job.push({"type": "done", "motion_id": job.motion_id, "frames": written})
-
-
-def random_seed() -> int:
-    return secrets.randbelow(2**31)

@@ -14,16 +14,16 @@ import sys
 import time
 from pathlib import Path
 
-from ..motion.clip import DATA_DIR, Caption, Clip, save_clips
-from .card import write_card
-from .labels import cmu_prompt, label_family
+from interplay.motion.clip import DATA_DIR, Caption, Clip, save_clips
+from interplay.data.card import write_card
+from interplay.motion.labels import cmu_prompt, label_family
 
 REPO = Path(__file__).resolve().parents[3]
 DEFAULT_SOURCE = REPO.parent / "shared" / "data"
 # HDM05's actor "mm" is held out entirely as the test set: unseen performer, every class.
 HDM05_TEST_ACTOR = "mm"
 SPLIT_SHARES = {"test": 0.15, "val": 0.10}
-# Composed two-person clips per kind and split (interplay.motion.compose), 4 s each; a split's
+# Composed two-person clips per kind and split (interplay.motion.pair.compose), 4 s each; a split's
 # pairs are composed only from that split's real single-person clips.
 COMPOSED_PER_KIND = {"train": 24, "val": 4, "test": 4}
 COMPOSED_SECONDS = 4.0
@@ -51,7 +51,7 @@ def stratified_split(ids_by_family: dict[str, list[str]], min_test: int = 1) -> 
 
 
 def build_cmu_bvh(src: Path) -> list[Clip]:
-    from ..motion.retarget.cmu_daz import load_cmu_bvh, read_cmu_index
+    from interplay.motion.retarget.cmu_daz import load_cmu_bvh, read_cmu_index
 
     index = read_cmu_index(src / "cmu-index" / "cmu_index.csv")
     clips = []
@@ -71,7 +71,7 @@ def build_cmu_bvh(src: Path) -> list[Clip]:
 
 
 def build_salsa(src: Path) -> list[Clip]:
-    from ..motion.retarget.cmu_daz import load_salsa_pair
+    from interplay.motion.retarget.cmu_daz import load_salsa_pair
 
     clips = []
     for lead in sorted((src / "cmu-salsa" / "60").glob("60_*.bvh")):
@@ -96,7 +96,7 @@ def build_salsa(src: Path) -> list[Clip]:
 
 
 def build_hdm05(src: Path) -> list[Clip]:
-    from ..motion.retarget.hdm05 import hdm05_prompt, load_hdm05
+    from interplay.motion.retarget.hdm05 import hdm05_prompt, load_hdm05
 
     clips = []
     for path in sorted((src / "hdm05").glob("*/*.amc")):
@@ -111,7 +111,7 @@ def build_hdm05(src: Path) -> list[Clip]:
 
 
 def build_cmu_8action(src: Path) -> list[Clip]:
-    from ..motion.retarget.cmu_8action import cmu_8action_prompt, load_cmu_8action
+    from interplay.motion.retarget.cmu_8action import cmu_8action_prompt, load_cmu_8action
 
     clips = []
     for path in sorted((src / "cmu-8action").glob("*/*/*.txt")):
@@ -151,7 +151,7 @@ def assign_splits(clips: list[Clip]) -> None:
 
 
 def add_captions(clips: list[Clip]) -> None:
-    from ..motion.posecodes import caption_clip
+    from interplay.motion.posecodes import caption_clip
 
     for c in clips:
         caps: list[Caption] = []
@@ -167,7 +167,7 @@ def build_composed(clips: list[Clip], per_kind: dict[str, int] = COMPOSED_PER_KI
     """Synthetic two-person clips composed from the real clips (after their splits are set):
     train pairs from train bases only, val/test pairs from val/test bases. Kinds a split has no
     bases for are skipped and noted in the card."""
-    from ..motion.compose import KINDS, compose_set, pool_of
+    from interplay.motion.pair.compose import KINDS, compose_set, pool_of
 
     COMPOSE_NOTES.clear()
     out: list[Clip] = []

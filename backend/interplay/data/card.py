@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections import Counter, defaultdict
 from pathlib import Path
 
-from ..motion.clip import Clip
-from ..motion.skeleton import FPS
+from interplay.motion.clip import Clip
+from interplay.motion.skeleton import FPS
 
 SOURCES = {
     "cmu-bvh": ("CMU Graphics Lab mocap, Daz-friendly BVH (subjects 02–16: walks, runs, jumps)", "CMU terms"),
@@ -38,7 +38,7 @@ def _composed_lines(clips: list[Clip], notes=()) -> list[str]:
     """The composed pairs: how they are made, how many of each kind per split."""
     composed = [c for c in clips if c.source == "composed"]
     lines = ["", "### Composed two-person clips (`composed.npz`)", "",
-             "Built by `interplay.motion.compose` after the real sources: two real single-person motions of",
+             "Built by `interplay.motion.pair.compose` after the real sources: two real single-person motions of",
              "the same split (train pairs only from train clips, val/test pairs from val/test clips) —",
              "quiet standing stretches (played back and forth with a cosine time warp) or level walks",
              "(looped on their gait cycle, the second time-warped to the first's speed) — are placed",

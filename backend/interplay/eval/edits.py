@@ -17,8 +17,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from ..motion import skeleton as sk
-from ..motion.posecodes import caption_clip, frame_codes
+from interplay.motion import skeleton as sk
+from interplay.motion.posecodes import caption_clip, frame_codes
 
 
 @dataclass(frozen=True)

@@ -31,9 +31,9 @@ from typing import Callable
 
 import numpy as np
 
-from ..motion import skeleton as sk
-from ..motion.metrics import pair_geometry, person_metrics
-from ..motion.pairs import canonical_window, pair_windows
+from interplay.motion import skeleton as sk
+from interplay.motion.metrics import pair_geometry, person_metrics
+from interplay.motion.pair.windows import canonical_window, pair_windows
 
 WINDOW = STRIDE = 80
 WEIGHTS = Path(__file__).resolve().parents[3] / "models" / "weights"
@@ -66,7 +66,7 @@ class PairSet:
 
 
 def pair_set(split: str = "test", clips=None, window: int = WINDOW, stride: int = STRIDE) -> PairSet:
-    from ..motion.clip import default_clips
+    from interplay.motion.clip import default_clips
     clips = [c for c in (clips or default_clips()) if c.split == split and len(c.people) == 2]
     w = pair_windows(clips, window, stride, roles="as_is", mirror=False)
     prompts = {c.id: c.prompt for c in clips}
@@ -92,12 +92,12 @@ class StatsEmbedding:
     name = "statistics embedding (reaction_eval: standardised window statistics + PCA on train)"
 
     def __init__(self, reference: np.ndarray):
-        from ..agents.reaction_eval import Embedding
+        from interplay.eval.reaction import Embedding
         self.emb = Embedding(self.stats(reference))
 
     @staticmethod
     def stats(windows: np.ndarray) -> np.ndarray:
-        from ..agents.reaction_eval import window_stats
+        from interplay.eval.reaction import window_stats
         w = np.stack([canonical_window(np.asarray(x, np.float64)) for x in windows])
         return np.concatenate([window_stats(w[:, 0], w[:, 1]), window_stats(w[:, 1], w[:, 0])],
                               axis=1)
@@ -119,7 +119,7 @@ class LearnedEmbedding:
 def fid_embedding(train: PairSet):
     """The learned pair evaluator when it loads, else the statistics embedding."""
     try:
-        from ..agents.pair_evaluator import PairEvaluator
+        from interplay.review.pair_evaluator import PairEvaluator
         return LearnedEmbedding(PairEvaluator.load())
     except Exception:   # not there yet (or broken): the documented statistics fallback
         return StatsEmbedding(train.windows)
@@ -127,10 +127,11 @@ def fid_embedding(train: PairSet):
 
 # -- rows ------------------------------------------------------------------------------------
 def _retrieval(clips) -> Generate:
-    from ..agents.generator import Generator, Request
-    from ..agents.retrieval import RetrievalIndex
-    from ..text.encoder import get_encoder
-    gen = Generator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+    from interplay.generators.retrieval.generator import RetrievalGenerator
+    from interplay.generators.base import Request
+    from interplay.generators.retrieval.index import RetrievalIndex
+    from interplay.text.encoder import get_encoder
+    gen = RetrievalGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
 
     def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
         req = Request(prompt, persons=2, seconds=frames / sk.FPS, seed=seed)
@@ -140,12 +141,12 @@ def _retrieval(clips) -> Generate:
 
 
 def _coda(weights: Path, product: bool = False) -> Generate:
-    from ..agents.coda import CodaRuntime
-    from ..agents.coda_graphs import placeholder_reason
-    from ..agents.pair_finish import finish_pair
+    from interplay.generators.coda.runtime import CodaRuntime
+    from interplay.generators.weights import placeholder_reason
+    from interplay.generators.coda.finish import finish_pair
     if not (weights / "config.json").is_file():
         raise Skip(f"no weights in models/weights/{weights.name}")
-    why = placeholder_reason(weights)
+    why = placeholder_reason(weights, "CODA")
     if why:
         raise Skip(why.replace(str(WEIGHTS.parents[1]) + "/", ""))
     try:

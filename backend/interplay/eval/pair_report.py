@@ -22,9 +22,17 @@ import time
 
 import numpy as np
 
-from .metrics import confidence, fid
-from .pair import (ROW_NAMES, SCORES, WINDOW, Skip, fid_embedding, load_row, pair_set,
-                   window_scores)
+from interplay.eval.metrics import confidence, fid
+from interplay.eval.pair import (
+    ROW_NAMES,
+    SCORES,
+    WINDOW,
+    Skip,
+    fid_embedding,
+    load_row,
+    pair_set,
+    window_scores,
+)
 
 CONTACT_PROMPTS = {
     "handshake": "two people shake hands",
@@ -55,7 +63,7 @@ def contact_windows(clips) -> dict[str, dict]:
 
 def touches(pair: np.ndarray, window: list[int]) -> bool:
     """A hand within HAND_CONTACT of the other body on some frame of [lo, hi)."""
-    from ..motion.metrics import pair_geometry
+    from interplay.motion.metrics import pair_geometry
     lo, hi = window
     a, b = (np.asarray(p[lo:hi], np.float64) for p in pair)
     if len(a) == 0:
@@ -103,8 +111,8 @@ def run_eval_pair(rows=ROW_NAMES, repeats: int = 3, seed: int = 0, limit: int | 
                   contact_seeds: int = 10, clips=None, weights=None, log=None) -> dict:
     """{"sets": {"captured"|"composed": {"windows", "rows": {row: {col: [mean, hw]}}}},
     "skipped": {row: why}, "fid_embedding", "contact": contact_check(...)}."""
-    from ..motion.clip import default_clips
-    from .pair import WEIGHTS
+    from interplay.motion.clip import default_clips
+    from interplay.eval.pair import WEIGHTS
     if repeats < 2:
         raise ValueError("--repeats must be at least 2 (for the intervals)")
     clips = list(clips or default_clips())

@@ -21,9 +21,9 @@ from typing import Callable
 
 import numpy as np
 
-from ..motion import features as F
-from ..motion.kinematics import fit_offsets
-from ..motion.skeleton import FPS
+from interplay.motion import features as F
+from interplay.motion.kinematics import fit_offsets
+from interplay.motion.skeleton import FPS
 
 WEIGHTS = Path(__file__).resolve().parents[3] / "models" / "weights"
 ROW_NAMES = ("real", "retrieval", "spam", "spam_fp32", "spam_nolock", "spam_nocs", "spam_vq",
@@ -63,10 +63,11 @@ def _trained(weights: Path) -> None:
 
 
 def _retrieval(clips) -> Row:
-    from ..agents.generator import Generator, Request
-    from ..agents.retrieval import RetrievalIndex
-    from ..text.encoder import get_encoder
-    gen = Generator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+    from interplay.generators.retrieval.generator import RetrievalGenerator
+    from interplay.generators.base import Request
+    from interplay.generators.retrieval.index import RetrievalIndex
+    from interplay.text.encoder import get_encoder
+    gen = RetrievalGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
 
     def generate(text: str, frames: int, seed: int) -> np.ndarray:
         req = Request(text, persons=1, seconds=frames / FPS, seed=seed)
@@ -82,7 +83,7 @@ def _spam(name: str, weights: Path, precision: str | None = None, sampling=None,
     sampling = dict(sampling or {})
     edit_kw = {k: sampling.pop(k) for k in ("mode", "keep_noise") if k in sampling}
     _trained(weights)
-    from ..agents.spam import SpamRuntime
+    from interplay.generators.spam.runtime import SpamRuntime
     try:
         rt = SpamRuntime.load(weights, threads=1, precision=precision, foot_lock=foot_lock)
     except FileNotFoundError as exc:

@@ -12,9 +12,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import skeleton as sk
-from .kinematics import facing_direction
-from .signals import smooth, window_percentile
+from interplay.motion import skeleton as sk
+from interplay.motion.kinematics import facing_direction
+from interplay.motion.signals import smooth, window_percentile
 
 J = sk.JOINT_INDEX
 HIPS = [J["left_hip"], J["right_hip"]]

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .clip import Caption
+from interplay.motion.clip import Caption
 
 PARTS = ("body", "left_upper", "right_upper", "left_lower", "right_lower")
 
@@ -236,7 +236,7 @@ def summarise(captions: list[Caption], max_body: int = 3, max_parts: int = 2) ->
     return sentence[0].upper() + sentence[1:] + "."
 
 
-# Label family (interplay.data.labels.label_family) → parts whose captions should show it and
+# Label family (interplay.motion.labels.label_family) → parts whose captions should show it and
 # the words that do. Families without a caption (throw, soccer, salsa …) are not scored.
 FAMILY_CHECKS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "walk": (("body",), ("walks",)),
@@ -258,7 +258,7 @@ FAMILY_CHECKS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 
 def label_families(label: str, prompt: str) -> list[str]:
     """Scored families of a clip: its coarse family, plus "circle" for travelling in circles."""
-    from ..data.labels import label_family  # the data set's own family rule, one definition
+    from interplay.motion.labels import label_family  # the data set's own family rule, one definition
 
     text = f"{prompt} {label}".lower()
     fams = [label_family(prompt)]

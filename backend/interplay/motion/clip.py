@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .skeleton import FPS
+from interplay.motion.skeleton import FPS
 
 DATA_DIR = Path(__file__).resolve().parents[3] / "models" / "data"
 

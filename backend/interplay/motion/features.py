@@ -33,9 +33,14 @@ from typing import Iterable
 
 import numpy as np
 
-from . import skeleton as sk
-from .kinematics import facing_angle, fit_offsets, forward_kinematics, inverse_kinematics
-from .rotations import matrix_to_6d, sixd_to_matrix, yaw_matrix
+from interplay.motion import skeleton as sk
+from interplay.motion.kinematics import (
+    facing_angle,
+    fit_offsets,
+    forward_kinematics,
+    inverse_kinematics,
+)
+from interplay.motion.rotations import matrix_to_6d, sixd_to_matrix, yaw_matrix
 
 # Joints whose local rotation moves a child: every joint that is someone's parent.
 ROT_JOINTS: tuple[int, ...] = tuple(j for j in range(sk.NUM_JOINTS) if sk.children(j))

@@ -23,8 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import skeleton as sk
-from .rotations import rotation_between
+from interplay.motion import skeleton as sk
+from interplay.motion.rotations import rotation_between
 
 _EPS = 1e-9
 

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import skeleton as sk
-from .rotations import rotation_between, yaw_matrix
+from interplay.motion import skeleton as sk
+from interplay.motion.rotations import rotation_between, yaw_matrix
 
 UP = np.array([0.0, 1.0, 0.0])
 # Joints whose rotation is fit from several children (the rest are a single bone's swing).

@@ -27,9 +27,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import skeleton as sk
-from .body import (HAND_SPHERES, SPHERE_PART_MASK, body_spheres, centre_distances, lens_volume,
-                   surface_gaps)
+from interplay.motion import skeleton as sk
+from interplay.motion.pair.body import (
+    HAND_SPHERES,
+    SPHERE_PART_MASK,
+    body_spheres,
+    centre_distances,
+    lens_volume,
+    surface_gaps,
+)
 
 M3_TO_CM3 = 1e6
 # Leaf joints carry a segment that extends past them: its centre lies this fraction of the

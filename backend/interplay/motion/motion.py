@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .skeleton import FPS, NUM_JOINTS, SKELETON_NAME
+from interplay.motion.skeleton import FPS, NUM_JOINTS, SKELETON_NAME
 
 DECIMALS = 4  # metres → 0.1 mm
 

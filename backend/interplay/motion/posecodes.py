@@ -17,11 +17,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import skeleton as sk
-from .bodyframe import DOWN, BodyFrame, angle, body_frame, frames
-from .captions import captions_from_codes, score_clips, summarise
-from .clip import Caption
-from .signals import fill_gaps, runs, smooth, window_fraction, zigzag
+from interplay.motion import skeleton as sk
+from interplay.motion.bodyframe import DOWN, BodyFrame, angle, body_frame, frames
+from interplay.motion.captions import captions_from_codes, score_clips, summarise
+from interplay.motion.clip import Caption
+from interplay.motion.signals import fill_gaps, runs, smooth, window_fraction, zigzag
 
 J = sk.JOINT_INDEX
 SIDES = ("left", "right")

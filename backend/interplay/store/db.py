@@ -7,7 +7,7 @@ from pathlib import Path
 from sqlalchemy import Engine, create_engine, event, inspect, text
 from sqlalchemy.engine import make_url
 
-from .models import Base
+from interplay.store.models import Base
 
 
 def make_engine(url: str) -> Engine:

@@ -11,8 +11,8 @@ import numpy as np
 from sqlalchemy import Engine, func, select
 from sqlalchemy.orm import Session, load_only
 
-from ..motion.skeleton import FPS, NUM_JOINTS
-from .models import ID_PATTERN, MotionRow, new_id
+from interplay.motion.skeleton import FPS, NUM_JOINTS
+from interplay.store.models import ID_PATTERN, MotionRow, new_id
 
 _ID_RE = re.compile(ID_PATTERN)
 

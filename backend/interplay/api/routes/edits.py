@@ -7,11 +7,11 @@ import logging
 
 from fastapi import APIRouter, HTTPException, Request
 
-from ...agents.spam_generator import EditUnavailable
-from ..deps import RepoDep, generator as loaded_generator
-from ..edits import edit_stored
-from ..motion_json import motion_payload
-from ..schemas import ERRORS, EditCreate, MotionOut
+from interplay.generators.base import EditUnavailable
+from interplay.api.deps import RepoDep, generator as loaded_generator
+from interplay.pipeline.editing import edit_stored
+from interplay.pipeline.motion_json import motion_payload
+from interplay.api.schemas import ERRORS, EditCreate, MotionOut
 
 log = logging.getLogger(__name__)
 router = APIRouter(prefix="/api", tags=["motions"])

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 from fastapi import APIRouter, HTTPException, Request
 
-from ..deps import JobsDep, RepoDep, generator as loaded_generator
-from ..jobs import JobSpec, random_seed
-from ..schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
+from interplay.api.deps import JobsDep, RepoDep, generator as loaded_generator
+from interplay.api.jobs import JobSpec
+from interplay.generators.base import random_seed
+from interplay.api.schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
 
 router = APIRouter(prefix="/api/jobs", tags=["jobs"])
 
@@ -26,10 +27,6 @@ def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request) 
     if body.mode == "react":
         if not repo.exists(body.actor_motion_id):
             raise HTTPException(404, f"no motion {body.actor_motion_id!r} to react to")
-        try:
-            from ...agents.reaction import react_job  # noqa: F401  (the reaction engineer's)
-        except ImportError:
-            raise HTTPException(503, "react mode is not available on this server yet") from None
     # Looked up here, not as a dependency: dependencies run before the body is validated, and
     # bad input must get its 422 even while the generator is unavailable (503).
     generator = loaded_generator(request)

@@ -8,11 +8,11 @@ from typing import Annotated, Literal
 
 from fastapi import APIRouter, HTTPException, Query, Response
 
-from ...motion import skeleton as sk
-from ...store import StoredMotion
-from ..deps import RepoDep
-from ..motion_json import motion_file, motion_payload
-from ..schemas import ERRORS, History, MotionOut, SkeletonOut
+from interplay.motion import skeleton as sk
+from interplay.store import StoredMotion
+from interplay.api.deps import RepoDep
+from interplay.pipeline.motion_json import motion_file, motion_payload
+from interplay.api.schemas import ERRORS, History, MotionOut, SkeletonOut
 
 router = APIRouter(prefix="/api", tags=["motions"])
 
@@ -57,7 +57,7 @@ def export_motion(motion_id: str, repo: RepoDep,
     if person >= motion.persons:
         raise HTTPException(422, f"person {person} does not exist: this motion has "
                                  f"{motion.persons} person(s), numbered from 0")
-    from ...motion.bvh import write_bvh
+    from interplay.motion.formats.bvh import write_bvh
     text = write_bvh(motion.people[person].astype("float64"), fps=motion.fps)
     return Response(text, media_type="text/plain; charset=utf-8", headers={
         "Content-Disposition": f'attachment; filename="interplay-{motion.id}-person{person}.bvh"'})

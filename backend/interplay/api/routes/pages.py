@@ -8,7 +8,7 @@ from pathlib import Path
 from fastapi import APIRouter, HTTPException
 from fastapi.responses import FileResponse, HTMLResponse
 
-from ..deps import RepoDep, SettingsDep
+from interplay.api.deps import RepoDep, SettingsDep
 
 router = APIRouter(include_in_schema=False)
 

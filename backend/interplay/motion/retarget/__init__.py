@@ -13,8 +13,8 @@ from typing import Mapping, Sequence, Union
 
 import numpy as np
 
-from .. import skeleton as sk
-from ..kinematics import canonicalize, fit_to_skeleton, resample
+from interplay.motion import skeleton as sk
+from interplay.motion.kinematics import canonicalize, fit_to_skeleton, resample
 
 # A SMPL joint is one source joint, or a weighted blend of several (weights sum to 1).
 JointSource = Union[str, Sequence[tuple[str, float]]]

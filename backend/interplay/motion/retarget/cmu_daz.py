@@ -37,10 +37,15 @@ from pathlib import Path
 
 import numpy as np
 
-from ..bvh import Bvh, read_bvh
-from . import JointSource, canonicalize, map_joints, to_smpl22
-from .cmu_index import read_cmu_index
-from .frame_rate import SALSA_FPS, estimate_true_fps, lead_in_frames, motion_defects
+from interplay.motion.formats.bvh import Bvh, read_bvh
+from interplay.motion.retarget import JointSource, canonicalize, map_joints, to_smpl22
+from interplay.motion.retarget.cmu_index import read_cmu_index
+from interplay.motion.retarget.frame_rate import (
+    SALSA_FPS,
+    estimate_true_fps,
+    lead_in_frames,
+    motion_defects,
+)
 
 DAZ_MAP: dict[str, JointSource] = {
     "pelvis": (("hip", 0.5), ("abdomen", 0.5)),

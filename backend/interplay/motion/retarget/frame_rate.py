@@ -33,8 +33,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import skeleton as sk
-from ..kinematics import facing_angle
+from interplay.motion import skeleton as sk
+from interplay.motion.kinematics import facing_angle
 
 SALSA_FPS = 60
 CMU_RATES = (120, 60)  # the only rates in CMU's index (2109 and 326 trials)

@@ -34,8 +34,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..acclaim import load_acclaim
-from . import JointSource, canonicalize, to_smpl22
+from interplay.motion.formats.acclaim import load_acclaim
+from interplay.motion.retarget import JointSource, canonicalize, to_smpl22
 
 HDM05_FPS = 120
 

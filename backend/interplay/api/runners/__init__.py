@@ -1,0 +1,1 @@
+"""What a job runs in its worker thread: generation and reaction runners."""

@@ -1,0 +1,1 @@
+"""Speed benchmarks (`interplay bench`): the API, SPAM, CODA and the ARFlow reactor."""

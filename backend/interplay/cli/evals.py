@@ -1,0 +1,121 @@
+"""`interplay eval`, `eval-react` and `review-eval`: the measurement commands (the reports live in `interplay.eval`)."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+from interplay.cli.args import CliError
+
+
+
+def _sampling_args(items: list[str] | None) -> list[tuple[str, object]]:
+    """["cfg=2.5", "mode=inpaint"] → [("cfg", 2.5), ("mode", "inpaint")] (numbers parsed)."""
+    out = []
+    for item in items or []:
+        key, sep, value = item.partition("=")
+        if not sep or not key.strip():
+            raise CliError(f"--sampling takes KEY=VALUE, got {item!r}")
+        try:
+            parsed: object = int(value) if value.strip().lstrip("-").isdigit() else float(value)
+        except ValueError:
+            parsed = value
+        out.append((key.strip(), parsed))
+    return out
+
+
+def cmd_eval(args) -> int:
+    from interplay.eval.report import EvalConfig, format_table, run_eval
+    from interplay.eval.rows import ROW_NAMES
+    rows = [r.strip() for r in args.rows.split(",") if r.strip()] if args.rows else list(ROW_NAMES)
+    unknown = [r for r in rows if r not in ROW_NAMES]
+    if unknown or not rows:
+        raise CliError(f"--rows: unknown row(s) {unknown}; expected some of {','.join(ROW_NAMES)}")
+    try:
+        cfg = EvalConfig(repeats=args.repeats, seed=args.seed, split=args.split,
+                         sampling=tuple(_sampling_args(args.sampling)))
+        report = run_eval(rows, cfg, log=lambda m: print(m, file=sys.stderr))
+    except (ValueError, FileNotFoundError) as exc:
+        raise CliError(str(exc)) from None
+    except TypeError as exc:     # a --sampling key the runtime does not take
+        raise CliError(f"--sampling: {exc}") from None
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
+def cmd_eval_react(args) -> int:
+    from dataclasses import replace as _replace
+
+    from interplay.reaction.session import get_reaction_model
+    from interplay.eval.reaction import ROWS, format_table, run_eval_react
+    try:
+        rows = tuple(args.rows.split(",")) if args.rows else ROWS
+        if any(r not in ROWS for r in rows):
+            raise ValueError(f"--rows: expected some of {','.join(ROWS)}, got {args.rows!r}")
+        model = get_reaction_model()
+        sampling = model.sampling
+        for item in args.sampling or ():
+            key, _, value = item.partition("=")
+            if key not in sampling.__dataclass_fields__ or not value:
+                raise ValueError(f"--sampling {item!r}: expected KEY=VALUE with KEY one of "
+                                 f"{', '.join(sampling.__dataclass_fields__)}")
+            kind = type(getattr(sampling, key))
+            sampling = _replace(sampling, **{key: kind(float(value)) if kind is int else kind(value)})
+        report = run_eval_react(rows, repeats=args.repeats, seed=args.seed, model=model,
+                                sampling=sampling, split=args.split,
+                                log=lambda m: print(m, file=sys.stderr))
+    except (FileNotFoundError, ValueError) as exc:
+        raise CliError(str(exc)) from None
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
+def cmd_review_eval(args) -> int:
+    """The reviewer before/after its correction rounds on CoMA's 40 Table 8 prompts."""
+    from interplay.generators.router import load_generator
+    from interplay.eval.review import format_table, run, table8_prompts
+    from interplay.settings import get_settings
+    if args.limit is not None and args.limit < 1:
+        raise CliError("--limit must be at least 1")
+    settings = get_settings()
+    generator = load_generator(settings.data_dir, settings.spam_dir, coda_dir=settings.coda_dir)
+    prompts = table8_prompts()[:args.limit]
+    report = run(generator, prompts, seconds=args.seconds, rounds=args.rounds,
+                 log=lambda m: print(m, file=sys.stderr))
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("eval", help="text-to-motion metrics (R-precision, FID, …) of every "
+                       "generator on the test split, with 95%% confidence intervals")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--repeats", type=int, default=10, help="repeats for the CIs (default 10)")
+    p.add_argument("--rows", help="comma-separated: real,retrieval,spam,spam_fp32,spam_nocs,"
+                   "spam_vq,single_vq (default all; rows without weights are skipped)")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--split", choices=("test", "val"), default="test",
+                   help="val: choose settings there (its own edit cases), never on test")
+    p.add_argument("--sampling", nargs="*", metavar="KEY=VALUE",
+                   help="SPAM rows' settings, e.g. cfg=2.5 steps=10 mode=inpaint")
+    p.set_defaults(func=cmd_eval)
+
+    p = sub.add_parser("eval-react", help="ARFlow reactions on the test split's pairs: FID, "
+                       "IV, IF, contacts, skating without/with guidance and reprojection")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--repeats", type=int, default=2, help="sampling seeds per row (default 2)")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--split", choices=("test", "val"), default="test",
+                   help="val: for choosing sampling settings (never tune on test)")
+    p.add_argument("--rows", help="comma-separated subset of the rows (default all)")
+    p.add_argument("--sampling", action="append", metavar="KEY=VALUE",
+                   help="override a sampling setting, e.g. guidance=0.5 (repeatable)")
+    p.set_defaults(func=cmd_eval_react)
+
+    p = sub.add_parser("review-eval", help="the reviewer before/after its correction rounds on "
+                       "CoMA's 40 Table 8 prompts (alignment, confirmed part edits, metrics)")
+    p.add_argument("--json", action="store_true", help="the full report as JSON")
+    p.add_argument("--limit", type=int, help="only the first N prompts")
+    p.add_argument("--seconds", type=float, default=8.0, help="length per prompt (default 8)")
+    p.add_argument("--rounds", type=int, default=2, help="K review rounds (default 2)")
+    p.set_defaults(func=cmd_review_eval)

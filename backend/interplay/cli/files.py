@@ -1,0 +1,54 @@
+"""`interplay metrics` and `export`: motion files in, numbers or other formats out."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+from interplay.cli.args import CliError, read_motion, write_text
+
+
+
+def cmd_metrics(args) -> int:
+    from interplay.pipeline.motion_json import plain
+    from interplay.motion.metrics import clip_metrics
+    motion = read_motion(args.motion)
+    metrics = plain(clip_metrics([p.astype("float64") for p in motion.people]))
+    if args.json:
+        print(json.dumps(metrics, indent=1))
+    else:
+        width = max(map(len, metrics), default=0)
+        print(f"{args.motion}: {len(motion.people)} person(s), {motion.frames} frames")
+        for k, v in metrics.items():
+            print(f"  {k:<{width}}  {v:.4f}" if isinstance(v, float) else f"  {k:<{width}}  {v}")
+    return 0
+
+
+def cmd_export(args) -> int:
+    motion = read_motion(args.motion)
+    if args.format == "json":
+        from interplay.pipeline.motion_json import plain
+        text = json.dumps(plain(motion.to_json()), separators=(",", ":"))
+    else:
+        if not 0 <= args.person < len(motion.people):
+            raise CliError(f"--person {args.person}: the motion has {len(motion.people)} "
+                           f"person(s), numbered from 0")
+        from interplay.motion.formats.bvh import write_bvh
+        text = write_bvh(motion.people[args.person].astype("float64"), fps=motion.fps)
+    write_text(args.out, text)
+    print(f"wrote {args.out}", file=sys.stderr)
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
+    p.add_argument("motion")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.set_defaults(func=cmd_metrics)
+
+    p = sub.add_parser("export", help="export a motion JSON file as BVH (one person) or JSON")
+    p.add_argument("motion")
+    p.add_argument("--format", choices=("bvh", "json"), required=True)
+    p.add_argument("--out", required=True)
+    p.add_argument("--person", type=int, default=0, help="BVH: which person (default 0)")
+    p.set_defaults(func=cmd_export)

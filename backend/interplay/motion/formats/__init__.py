@@ -1,0 +1,1 @@
+"""Capture file formats: BVH (read any hierarchy, write smpl22) and Acclaim ASF/AMC."""

@@ -1,0 +1,201 @@
+"""One generation job as CoMA's Algorithm 1: plan → per segment generate (SPAM for one person,
+retrieval as fallback and for two; SPAM conditions each part on the plan's part edits) →
+review rounds (reviewer.correct: part edits, in-betweens, re-draws) → trajectories (the plan's
+per segment, or the request's drawn path / preset for one person) → the blended whole →
+the caller's metrics and store.
+
+    result = orchestrate(generator, req, emit, on_frames, cancelled=job.cancelled)
+
+`emit(event)` gets the plan / segment / review / correction events; `on_frames(start, people)`
+gets every frame range as it becomes final — segments as they finish, a corrected segment
+again with the same start, and after trajectories the frames that moved. A failing stage
+raises StageError(stage, reason); a cancelled job raises segment_source.Cancelled.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Callable
+
+import numpy as np
+
+from interplay.motion.kinematics import facing_angle
+from interplay.motion.rotations import yaw_matrix
+from interplay.motion.skeleton import PELVIS
+from interplay.review.reviewer import CannotApply, correct
+from interplay.pipeline.segment_source import Cancelled, SegmentSource
+
+log = logging.getLogger(__name__)
+CHUNK = 40
+# A path drawn on the studio floor: world coordinates, its own size; the walk is retimed to
+# cover it, so the person ends where the path ends.
+DRAWN_PATH = {"anchor": "world", "scale_to_motion": False, "retime": True}
+__all__ = ["orchestrate", "OrchestratorConfig", "Outcome", "StageError", "Cancelled"]
+
+
+@dataclass(frozen=True)
+class OrchestratorConfig:
+    rounds: int = 2             # K: review rounds per segment (CoMA's study used 2)
+    tolerance: float = 0.1      # relative worsening of a watched metric that rejects a correction
+    review: bool = True
+
+
+DEFAULT = OrchestratorConfig()
+
+
+class StageError(RuntimeError):
+    def __init__(self, stage: str, reason: str):
+        super().__init__(f"{stage} failed: {reason}")
+        self.stage, self.reason = stage, reason
+
+
+@dataclass
+class Outcome:
+    people: list                       # float32 (T, 22, 3) per person
+    plan: dict
+    review: dict = field(default_factory=dict)
+
+
+@lru_cache(maxsize=1)
+def default_evaluator():
+    """The text–motion evaluator when its weights load, else None (reviews then score by
+    caption agreement)."""
+    from interplay.review.evaluator import DEFAULT_DIR, FILES, load_evaluator
+    if not all((DEFAULT_DIR / f).is_file() for f in FILES):
+        return None
+    try:
+        return load_evaluator()
+    except Exception as exc:   # broken or foreign files: review without it
+        log.warning("evaluator weights did not load: %s", exc)
+        return None
+
+
+def _realign(joints: np.ndarray, old: np.ndarray, b: int) -> np.ndarray:
+    """Frames b: of `joints` moved rigidly (yaw about Y + XZ shift) so that they continue from
+    joints[b-1] the way they continued from old[b-1]."""
+    if b >= len(joints):
+        return joints
+    turn = float(facing_angle(joints[b - 1]) - facing_angle(old[b - 1]))
+    rot = yaw_matrix(np.array(turn))
+    c_old, c_new = old[b - 1, PELVIS] * [1, 0, 1], joints[b - 1, PELVIS] * [1, 0, 1]
+    out = joints.copy()
+    out[b:] = (old[b:] - c_old) @ rot.T + c_new
+    return out
+
+
+def _trajectories(people: np.ndarray, plan: dict, trajectory: dict | None) -> int | None:
+    """Apply the plan's segment trajectories (or the request's path for its person) in place;
+    the first frame that moved, or None."""
+    from interplay.trajectory.apply import TrajectoryConfig, apply_trajectory
+    first = None
+    for p in range(people.shape[0]):
+        if trajectory is not None and int(trajectory.get("person", 0)) == p:
+            if "points" in trajectory and trajectory["points"] is not None:
+                moved = apply_trajectory(people[p], np.asarray(trajectory["points"], float),
+                                         cfg=TrajectoryConfig(**DRAWN_PATH))
+            else:
+                moved = apply_trajectory(people[p], {k: v for k, v in trajectory.items()
+                                                     if k not in ("person", "points")})
+            people[p] = moved
+            first = 0
+            continue
+        for seg in plan["segments"]:
+            if not seg.get("trajectory") or p not in seg.get("persons", [p]):
+                continue
+            a, b = int(seg["start"]), int(seg["end"])
+            old = people[p].copy()
+            people[p, a:b] = apply_trajectory(old[a:b], seg["trajectory"])
+            people[p] = _realign(people[p], old, b)
+            first = a if first is None else min(first, a)
+    return first
+
+
+def orchestrate(generator, req, emit: Callable[[dict], None],
+                on_frames: Callable[[int, list[np.ndarray]], None],
+                cancelled: Callable[[], bool] = lambda: False, trajectory: dict | None = None,
+                evaluator=None, cfg: OrchestratorConfig = DEFAULT) -> Outcome:
+    stage = "plan"
+    try:
+        plan = generator.plan(req)
+        emit({"type": "plan", "plan": plan})
+        stage = "generate"
+        source = SegmentSource(generator, req, plan)
+        kind = plan.get("generator", "retrieval")
+        spam = kind == "spam" and getattr(generator, "spam", None) is not None
+        history = []
+        for seg in plan["segments"]:
+            i, a, b = int(seg["index"]), int(seg["start"]), int(seg["end"])
+            emit({"type": "segment", "index": i, "status": "generating", "generator": kind})
+            stage = "generate"
+            source.fill(b, on_frames, cancelled)
+            if cfg.review and cfg.rounds > 0 and b - a >= 3:
+                stage = "review"
+                history.append(_review_segment(generator, source, seg, spam, evaluator, cfg,
+                                               emit, on_frames, int(plan.get("seed") or 0)))
+            if cancelled():
+                raise Cancelled()
+            emit({"type": "segment", "index": i, "status": "done", "generator": kind})
+        stage = "trajectory"
+        people = source.people[:, :source.written].copy()
+        first = _trajectories(people, source.plan, trajectory)
+        if first is not None:
+            for s in range(first, people.shape[1], CHUNK):
+                on_frames(s, [p[s:s + CHUNK] for p in people])
+        plan = source.plan
+        if trajectory is not None:
+            plan = {**plan, "trajectory": trajectory}
+        review = {"rounds": cfg.rounds, "tolerance": cfg.tolerance,
+                  "score_kind": "evaluator" if evaluator is not None else "caption_agreement",
+                  "segments": history}
+        return Outcome(people=[p.astype(np.float32) for p in people], plan=plan, review=review)
+    except (Cancelled, StageError):
+        raise
+    except Exception as exc:
+        log.exception("job stage %s failed", stage)
+        raise StageError(stage, f"{type(exc).__name__}: {exc}") from exc
+
+
+def _review_segment(generator, source: SegmentSource, seg: dict, spam: bool, evaluator,
+                    cfg: OrchestratorConfig, emit, on_frames, seed: int) -> dict:
+    """Review rounds on one segment; corrected frames go back into `source` and out again."""
+    i, a, b = int(seg["index"]), int(seg["start"]), int(seg["end"])
+    calls: list = []          # per applied instruction: the re-drawn source (or None)
+
+    def apply(instr: dict, people: list[np.ndarray], s: int) -> list[np.ndarray]:
+        kind = instr["kind"]
+        if kind in ("regenerate", "edit_part") and not spam and seg.get("retrieval") is not None:
+            # Retrieval cannot edit a part: it re-draws the segment's captures instead, and the
+            # reviewer keeps the new draw only if it is better.
+            if kind == "edit_part":
+                instr["via"] = "regenerate"
+            other, frames = source.redraw(i, s)
+            calls.append(other)
+            return frames
+        if not spam or source.persons != 1:
+            raise CannotApply(f"{kind} needs the SPAM model for one person "
+                              f"({getattr(generator, 'reason', None) or 'not loaded'})")
+        full = source.people[0, :source.written].copy()
+        full[a:b] = people[0]
+        frames = (a, b)
+        if kind == "inbetween":
+            frames = (a + int(instr["frames"][0]), a + int(instr["frames"][1]))
+        part = instr.get("part") if kind == "edit_part" else None
+        edit, _ = generator.edit(full, part, instr["prompt"], frames, s, context=seg["prompt"])
+        calls.append(None)
+        return [np.asarray(edit.joints, dtype=np.float64)[a:b]]
+
+    window = [source.people[p, a:b].copy() for p in range(source.persons)]
+    out = correct(seg, window, apply, evaluator=evaluator, rounds=cfg.rounds,
+                  tolerance=cfg.tolerance, seed=seed, emit=emit)
+    applied = [e for e in out.corrections if e["score_after"] is not None]
+    redrawn = [c for c, e in zip(calls, applied) if e["accepted"] and c is not None]
+    if redrawn:
+        source.adopt(redrawn[-1], b)
+    if any(e["accepted"] for e in applied):
+        for p in range(source.persons):
+            source.people[p, a:b] = out.people[p]
+        for s in range(a, b, CHUNK):
+            on_frames(s, [source.people[p, s:min(b, s + CHUNK)] for p in range(source.persons)])
+    return {"segment": i, **out.history()}

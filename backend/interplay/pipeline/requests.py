@@ -1,0 +1,108 @@
+"""What a generation request is, validated the same way wherever it comes from (the API's job
+body, the CLI's flags): the prompt, people, length, seed and an optional path, with the limits
+that bound its cost, and pydantic errors as one readable line."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+
+MAX_PROMPT = 500
+MIN_SECONDS, MAX_SECONDS = 1.0, 20.0
+MAX_SEED = 2**31 - 1
+MAX_POINTS = 2000          # points of a drawn path
+MAX_COORD = 100.0          # metres from the origin
+
+
+class TrajectoryIn(BaseModel):
+    """A path for one person: drawn points on the floor ([x, z] metres, world) or a preset
+    shape (the planner's TrajectorySpec fields: shape, clockwise, size_m, …)."""
+    model_config = ConfigDict(extra="allow", json_schema_extra={"examples": [
+        {"person": 0, "points": [[0, 0], [1, 1], [2, 0]]},
+        {"person": 0, "shape": "circle", "clockwise": True, "size_m": 3}]})
+
+    person: Literal[0, 1] = Field(default=0, description="Who follows the path.")
+    points: list[tuple[float, float]] | None = Field(
+        default=None, min_length=2, max_length=MAX_POINTS,
+        description="[[x, z], …] metres on the studio floor (world coordinates).")
+    shape: str | None = Field(default=None, description="A preset shape (line, arc, circle, "
+                              "zigzag, s_curve, heart, figure_eight, square, spiral, …).")
+
+    @model_validator(mode="after")
+    def _one_of(self):
+        if (self.points is None) == (self.shape is None):
+            raise ValueError("give either points or shape")
+        if self.points is not None:
+            pts = [c for p in self.points for c in p]
+            if not all(abs(c) <= MAX_COORD and c == c for c in pts):
+                raise ValueError(f"points must be finite and within {MAX_COORD:g} m")
+            if max(abs(a - c) + abs(b - d) for (a, b), (c, d)
+                   in zip(self.points, self.points[1:])) == 0:
+                raise ValueError("points must not all be the same")
+            if self.model_extra:
+                raise ValueError(f"unexpected fields with points: {sorted(self.model_extra)}")
+        else:
+            from interplay.planner.schema import TrajectorySpec
+            from pydantic import ValidationError
+            try:
+                TrajectorySpec.model_validate(self.spec())
+            except ValidationError as exc:
+                from interplay.planner.schema import readable
+                raise ValueError(readable(exc)) from None
+        return self
+
+    def spec(self) -> dict:
+        """The shape's TrajectorySpec fields (without person)."""
+        return {"shape": self.shape, **(self.model_extra or {})}
+
+    def plain(self) -> dict:
+        if self.points is not None:
+            return {"person": self.person, "points": [list(p) for p in self.points]}
+        return {"person": self.person, **self.spec()}
+
+
+class GenerationRequest(BaseModel):
+    """The fields every generation takes."""
+
+    prompt: str | None = Field(default=None, description=f"What the people do, 1–{MAX_PROMPT} "
+                               "characters (required to generate; in react mode the optional "
+                               "intent, e.g. \"shake hands\": without one the reactor "
+                               "follows the actor unprompted).")
+    persons: Literal[1, 2] = Field(default=1, description="How many people: 1 or 2.")
+    seconds: float = Field(default=6.0, ge=MIN_SECONDS, le=MAX_SECONDS, allow_inf_nan=False,
+                           description=f"Length in seconds, {MIN_SECONDS:g}–{MAX_SECONDS:g}.")
+    seed: int | None = Field(default=None, ge=0, le=MAX_SEED,
+                             description="Sampling seed; random (and returned) when omitted.")
+    trajectory: TrajectoryIn | None = Field(default=None, description="A drawn path or preset "
+                                            "the person follows.")
+
+    @field_validator("prompt")
+    @classmethod
+    def _prompt(cls, v: str | None) -> str | None:
+        if v is None:
+            return None
+        v = " ".join(v.split())
+        if not v:
+            raise ValueError("must not be empty")
+        if len(v) > MAX_PROMPT:
+            raise ValueError(f"is {len(v)} characters long; the limit is {MAX_PROMPT}")
+        return v
+
+
+def readable_errors(errors) -> str:
+    """Pydantic errors as one readable line, e.g. "seconds: Input should be less than or
+    equal to 20; persons: Input should be 1 or 2"."""
+    parts = []
+    for err in errors:
+        loc = [str(x) for x in err.get("loc", ()) if x not in ("body", "query", "path")]
+        msg = str(err.get("msg", "invalid value")).removeprefix("Value error, ")
+        if err.get("type") == "json_invalid":
+            why = err.get("ctx", {}).get("error", "parse error")
+            loc, msg = [], f"request body is not valid JSON ({why})"
+        elif err.get("type") == "missing" and not loc:
+            msg = "a JSON request body is required"
+        elif err.get("type") == "model_attributes_type":
+            msg = "request body must be a JSON object"
+        parts.append(f"{'.'.join(loc)}: {msg}" if loc else msg)
+    return "; ".join(parts) or "invalid request"

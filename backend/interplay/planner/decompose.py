@@ -1,0 +1,264 @@
+"""Task decomposition of one clause: base (whole-body) motion + one edit per body part (CoMA's
+base-motion and local-edit prompts, appendix C.3).
+
+    decompose("a person walks in a circle while raising the left arm")
+      → Action(base="a person walks in a circle", edits={"left_arm": "raises the left arm"}, …)
+    decompose("she raises her right arm")       # a part verb: the body keeps its posture
+      → Action(base="a person stands", edits={"right_arm": "raises the right arm"}, …)
+
+Whole-body and travel verbs keep no edits unless a part is named ("jumps with both arms
+raised"); head and trunk modifiers ("looking down", "while spinning around") stay in the base.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from interplay.planner.verbs import VERBS, Verb, lookup, third
+
+ARM_WORDS = {"arm", "hand", "fist", "elbow", "wrist", "finger", "palm", "shoulder", "forearm",
+             "thumb"}
+LEG_WORDS = {"leg", "foot", "knee", "toe", "heel", "ankle", "thigh", "shin"}
+_PLURAL = {"feet": "foot"}
+_PART = re.compile(r"\b(?:(left|right|both|each|either|other)\s+)?(arms?|hands?|fists?|elbows?|"
+                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
+                   r"toes?|heels?|ankles?|thighs?|shins?)\b")
+_MARK = re.compile(r"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:while|with|holding|having|keeping|"
+                   r"as\s+(?:he|she|they|if|though|the\s+person))\b)|"
+                   r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
+_BOTH_HANDED = {"clap", "cross", "rub", "shrug", "catch", "shake"}   # no per-side rewrite
+_SPLIT_PARTS = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|right|both|other)\b)")
+_RESTING = re.compile(r"^(?:in\s+(?:a\s+)?rest(?:ing)?\s+position|relaxed|at\s+(?:the|his|her|their)\s+"
+                      r"sides?|down\s+by\s+(?:the|his|her|their)\s+sides?|by\s+the\s+sides?|resting)\b")
+POSTURE_BASE = {"standing": "a person stands", "sitting": "a person sits on the floor",
+                "lying": "a person lies on the floor", "squatting": "a person squats",
+                "kneeling": "a person kneels", "crawling": "a person kneels on all fours"}
+SUBJECT_NOUNS = {"person", "man", "woman", "boy", "girl", "child", "kid", "lady", "guy", "dancer",
+                 "player", "people", "men", "women", "figure", "someone", "somebody", "athlete",
+                 "footballer", "midfielder", "cowboy", "mime", "fan", "manager", "soldier"}
+PARTS = ("left_arm", "right_arm", "left_leg", "right_leg")
+
+
+@dataclass
+class Action:
+    text: str                         # the clause without its subject, present tense
+    subject: str | None
+    verb: Verb | None
+    base: str
+    edits: dict[str, str] = field(default_factory=dict)
+    posture: str = "standing"
+    known: bool = True                # False: no motion verb the planner understands
+
+
+def _limbs(side: str | None, noun: str, default_side: str | None = None) -> list[str]:
+    """Part keys for "left arm" / "both hands" / "feet" (plural: both sides)."""
+    plural = noun in _PLURAL or noun.endswith("s") and noun[:-1] in ARM_WORDS | LEG_WORDS
+    noun = _PLURAL.get(noun, noun)
+    word = noun[:-1] if plural else noun
+    limb = "arm" if word in ARM_WORDS else "leg"
+    if side in ("left", "right"):
+        return [f"{side}_{limb}"]
+    if side in ("both", "each") or plural:
+        return [f"left_{limb}", f"right_{limb}"]
+    return [f"{default_side}_{limb}"] if default_side else []
+
+
+def parts_in(text: str) -> list[str]:
+    """The parts a phrase moves: the limb after "with" ("holding the foot with both hands" →
+    arms), else its first limb mention ("hands resting on the knees" → arms)."""
+    m = re.search(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + _PART.pattern[2:], text)
+    found = _limbs(m.group(1), m.group(2)) if m else []
+    if not found:
+        m = _PART.search(text)
+        found = _limbs(m.group(1), m.group(2)) if m else []
+    return found
+
+
+def plain(text: str) -> str:
+    """Possessives → "the", spaces tidied."""
+    text = re.sub(r"\b(?:his|her|their|its)\s+(?!own\b)", "the ", text)
+    return re.sub(r"\s+", " ", text).strip(" ,")
+
+
+_LIMB = r"(arm|hand|fist|leg|knee|elbow|palm|shoulder|wrist|forearm|thumb)"
+_ADJS = r"((?:clenched|open|outstretched|bent|raised|straight|closed|extended)\s+)?"
+
+
+def for_side(text: str, part: str) -> str:
+    """An instruction for both sides ("raises both clenched fists") written for one ("raises the
+    clenched left fist")."""
+    side = part.split("_")[0]
+    text = re.sub(rf"\bboth\s+{_ADJS}{_LIMB}s?\b", rf"the \1{side} \2", text)
+    text = re.sub(rf"\bboth\s+{_ADJS}feet\b", rf"the \1{side} foot", text)
+    text = re.sub(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right ){_LIMB}s\b", rf"the \1{side} \2", text)
+    text = re.sub(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right )feet\b", rf"the \1{side} foot", text)
+    return re.sub(r"\bthe\s+the\b", "the", text.replace(" sides", " side"))
+
+
+def split_subject(text: str) -> tuple[str | None, str]:
+    """("the boy", "throws a punch") from "the boy throws a punch"; (None, text) if no subject."""
+    words = text.split()
+    for i, w in enumerate(words[:6]):
+        hit = lookup(w)
+        if hit and hit[1] != "gerund" and not (i and words[i - 1] in ("the", "a", "an")):
+            if i == 0:
+                return None, text
+            if any(x in ("with", "while", "to", "in", "on") or _PART.fullmatch(x) for x in words[:i]):
+                return None, text
+            return " ".join(words[:i]), " ".join(words[i:])
+    return None, text
+
+
+def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb | None]:
+    """(parts, instruction, verb) of one simultaneous phrase ("with the right arm raised")."""
+    mod = re.sub(r"^(?:(?:while|as\s+(?:he|she|they|if|though|the\s+person)|with|having|keeping|"
+                 r"still)\s+)+", "", mod).strip()
+    first = mod.split(" ", 1)[0]
+    hit = lookup(first)
+    if hit and hit[1] in ("gerund", "third"):                       # "raising the left arm"
+        return parts_in(mod), plain(third(hit[0].base) + mod[len(first):]), hit[0]
+    m = re.match(r"^(?:(?:the|a|an|his|her|their)\s+)?(?:(left|right|both|other)\s+)?"
+                 r"(?:(arms?|hands?|fists?|legs?|foot|feet|knees?|elbows?|palms?)\b)?\s*(.*)$", mod)
+    side, noun, rest = m.group(1), m.group(2), m.group(3)
+    if noun is None and side in ("left", "right") and last_limb:
+        noun = last_limb[0].split("_")[1]                            # "… and the left raised"
+    if noun is None:
+        return parts_in(mod), plain(mod), None
+    parts = _limbs(side, noun, None)
+    obj = f"the {side + ' ' if side in ('left', 'right') else ''}{noun}"
+    if side == "both":
+        obj = f"both {noun}"
+    word = rest.split(" ", 1)[0] if rest else ""
+    v = lookup(word)
+    if v and v[1] in ("past", "participle", "gerund") and v[0].kind != "light":
+        return parts, plain(f"{third(v[0].base)} {obj} {rest[len(word):]}"), v[0]
+    if _RESTING.match(rest):
+        return parts, plain(f"rests {obj} at the side"), None
+    return parts, plain(f"holds {obj} {rest}"), None
+
+
+def _pieces(rest: str, part_verb: bool) -> list[str]:
+    """Main phrase and its simultaneous modifiers. "with …" modifies the main phrase only
+    right after it, and not when the main verb is a part's ("kicks with the right foot")."""
+    out: list[str] = []
+    pieces = [p.strip(" ,") for p in _MARK.split(rest) if p and p.strip(" ,")]
+    words = pieces[0].split()
+    for i, w in enumerate(words[1:], 1):          # "walks forward waving the right hand"
+        hit = lookup(w)
+        if hit and hit[1] == "gerund" and hit[0].kind != "light":
+            pieces[:1] = [" ".join(words[:i]), " ".join(words[i:])]
+            break
+    for p in pieces:
+        if out and p.startswith("with ") and (len(out) > 1 or part_verb):
+            out[-1] = f"{out[-1]} {p}"
+        else:
+            out.append(p)
+    return out
+
+
+def _lead_modifier(rest: str) -> str:
+    """"with both arms extended squats twice" → "squats twice with both arms extended"."""
+    words = rest.split()
+    if words and words[0] in ("with", "while"):
+        for i in range(2, len(words)):
+            hit = lookup(words[i])
+            if hit and hit[1] == "third":
+                return " ".join(words[i:] + words[:i])
+    return rest
+
+
+def decompose(clause: str, posture: str = "standing", last_parts: list[str] | None = None) -> Action:
+    """Base motion and part edits of one clause, given the posture the body is in."""
+    subject, rest = split_subject(clause.strip())
+    rest = _lead_modifier(rest)
+    first = rest.split(" ", 1)[0]
+    hit = lookup(first)
+    verb = hit[0] if hit else None
+    if verb is not None and hit[1] != "gerund":
+        rest = third(verb.base) + rest[len(first):]
+    if verb is not None and verb.kind == "light":
+        doing = re.match(r"^does a (handstand|push-up|sit-up|jumping jack)", rest)
+        verb = VERBS["stand"] if doing else None
+    if verb is not None and verb.base in ("move", "go"):            # "moves in a circle" → walks
+        rest, verb = "walks" + rest[len(rest.split(" ", 1)[0]):], VERBS["walk"]
+    pieces = _pieces(rest, verb is not None and verb.kind == "part")
+    main, mods = pieces[0], pieces[1:]
+    text = plain(rest)
+    if verb is None:
+        return Action(text, subject, None, plain(main), {}, posture, known=False)
+    edits: dict[str, str] = {}
+
+    def add(parts: list[str], instruction: str) -> None:
+        for p in parts:
+            words = instruction if p.endswith("_arm") and _both_handed(instruction) \
+                else for_side(instruction, p)
+            edits[p] = f"{edits[p]}, {words}" if p in edits and words not in edits[p] else words
+
+    main = plain(main)
+    last = list(last_parts or [])
+    if verb.kind == "part":
+        if re.search(r"\b(?:it|them)\b", main) and last:                # "lowers it"
+            noun = "both arms" if len(last) == 2 else "the " + last[0].replace("_", " ")
+            main = re.sub(r"\b(?:it|them)\b", noun, main, count=1)
+        chunks = _SPLIT_PARTS.split(main)
+        main_parts = [p for c in chunks for p in (parts_in(c) or _ellipsis(c, []))] or \
+            _limbs("both" if verb.part in ("arms", "legs") else "right", verb.part.rstrip("s"))
+        if len(chunks) > 1:                       # "extends the left arm … and the right upwards"
+            head = main.split(" ", 1)[0]
+            for c in chunks:
+                add(parts_in(c) or _ellipsis(c, main_parts),
+                    c if c.startswith(head) else f"{head} {_fill(c, main_parts)}")
+        else:
+            add(main_parts, main)
+        last = main_parts
+    base_bits = []
+    for mod in mods:
+        for sub in _SPLIT_PARTS.split(mod):
+            parts, words, v = _modifier_edit(sub, last)
+            if parts:
+                add(parts, words)
+                last = parts
+            elif v is not None and v.kind in ("whole", "travel"):
+                base_bits.append(plain(mod))
+            elif v is not None and verb.kind == "part":
+                add(last, words)
+            elif v is None and verb.kind != "part":
+                base_bits.append(plain(mod))
+    if verb.kind == "part":
+        base, new_posture = POSTURE_BASE.get(posture, POSTURE_BASE["standing"]), posture
+        whole = [_as_third(re.sub(r"^(?:while|as)\s+", "", b)) for b in base_bits]
+        if whole:                                  # "… while leaning forward" → "a person leans forward"
+            base = "a person " + " and ".join(whole)
+    else:
+        bits = [b if b.startswith(("while", "as ")) else f"while {b}" for b in base_bits]
+        base = " ".join(["a person", main] + bits)
+        new_posture = verb.posture or posture
+        if verb.base == "squat" and re.search(r"\b(?:down|on the floor|low)\b", main):
+            new_posture = "squatting"
+    return Action(text, subject, verb, re.sub(r"\s+", " ", base), edits, new_posture)
+
+
+def _both_handed(text: str) -> bool:
+    """Instructions both arms do together (clap, cross the arms, press the palms together)."""
+    hit = lookup(text.split(" ", 1)[0])
+    return bool(hit and hit[0].base in _BOTH_HANDED) or " together" in text
+
+
+def _as_third(phrase: str) -> str:
+    """"leaning forward" → "leans forward"."""
+    first, _, rest = phrase.partition(" ")
+    hit = lookup(first)
+    return f"{third(hit[0].base)} {rest}".strip() if hit else phrase
+
+
+def _ellipsis(chunk: str, main_parts: list[str]) -> list[str]:
+    m = re.search(r"\b(left|right)\b", chunk)
+    limb = main_parts[0].split("_")[1] if main_parts else "arm"
+    return [f"{m.group(1)}_{limb}"] if m else []
+
+
+def _fill(chunk: str, main_parts: list[str]) -> str:
+    """"the right upwards" → "the right arm upwards" (the limb named earlier)."""
+    limb = main_parts[0].split("_")[1] if main_parts else "arm"
+    return re.sub(r"\b(left|right)\b(?!\s+(?:arm|hand|leg|foot|fist|knee))", rf"\1 {limb}", chunk)

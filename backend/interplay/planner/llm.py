@@ -1,0 +1,157 @@
+"""Optional LLM planner: any OpenAI-compatible chat endpoint, prompted as CoMA's task planner
+(appendix C: recaption → temporal segments → base motion + local edits), answering the plan
+as JSON. The answer is parsed with json.loads and validated with pydantic — never executed.
+On any error, timeout or invalid answer the embedded planner answers instead and
+`fallback_reason` says why.
+
+    settings = Settings(llm_base_url="http://localhost:11434/v1", llm_model="qwen2.5:7b")
+    plan = llm_plan("a person does the wakanda salute", 1, 4.0, settings,
+                    fallback=lambda: embedded_plan(...))
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from typing import Callable
+
+import httpx
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from interplay.motion.skeleton import FPS
+from interplay.planner.durations import allocate
+from interplay.planner.schema import MAX_SEGMENTS, PartEdits, Plan, TrajectorySpec, readable
+
+MAX_ANSWER = 200_000     # characters of model output we are willing to parse
+
+
+class LLMSegment(BaseModel):
+    """One step as the model writes it (frames are ours to compute)."""
+    model_config = ConfigDict(extra="ignore")
+    prompt: str = Field(min_length=1, max_length=500)
+    base: str = Field(min_length=1, max_length=300)
+    edits: PartEdits = Field(default_factory=PartEdits)
+    trajectory: TrajectorySpec | None = None
+    seconds: float = Field(gt=0, le=30)
+    persons: list[int] = Field(default_factory=lambda: [0], min_length=1, max_length=2)
+    roles: dict[str, str] | None = None
+    repeat: int = Field(default=1, ge=1, le=20)
+
+
+class LLMAnswer(BaseModel):
+    model_config = ConfigDict(extra="ignore")
+    rewritten: str = Field(min_length=1, max_length=2000)
+    segments: list[LLMSegment] = Field(min_length=1, max_length=MAX_SEGMENTS)
+    reasons: list[str] = Field(default_factory=list, max_length=50)
+
+
+SYSTEM = """You are the task planner of a text-to-motion system. Plan the motion in three steps.
+1. Recaption: accurately infer the posture and movement of the body from the description, \
+with no information lost, using only plain motion words from motion-capture captions (walk, \
+run, jump, sit down, raise the left arm, kick with the right foot, ...). Replace context-rich \
+gestures and poses by what the body does ("wakanda forever salute" -> "crosses both arms in \
+front of the chest") and drop context that does not change the motion (emotions, places, \
+teams, dates, purposes). Answer questions with the motion that answers them.
+2. Temporal segments: split the motion into consecutive steps, each one single, concrete \
+movement (1 to 4 steps, at most 8; do not use more steps than the action needs). Simultaneous \
+movements ("while", "with") stay in one step. A count ("three times") is `repeat`.
+3. Decompose each step: `base` is the primary whole-body motion including head movement and \
+the global path, without limb details ("a person walks in a circle"); `edits` gives for \
+left_arm, right_arm, left_leg and right_leg what that limb does at the same time ("raises the \
+left arm"), or null; `trajectory` is a path when the step asks for one (shape: line, arc, \
+circle, zigzag, s_curve, heart, figure_eight, square, spiral, polyline, free; clockwise seen \
+from above; size_m, distance_m, turns; direction forward|backward|left|right), else null. \
+Estimate `seconds` for each step from how long the movement takes (a jump about 1.5 s, a walk \
+of 5 m about 4 s). With two people, `persons` lists who moves (0 and/or 1) and `roles` says \
+what each does, e.g. {"0": "a person stands still", "1": "a person walks away"}.
+Write every prompt as "a person ..." in the present tense. Do not include reasoning outside \
+the JSON. Answer with one JSON object only, matching this JSON schema:
+"""
+
+
+def _messages(prompt: str, persons: int, seconds: float | None) -> list[dict]:
+    schema = json.dumps(LLMAnswer.model_json_schema(), separators=(",", ":"))
+    length = f"{seconds:g} seconds in total" if seconds else "choose the length"
+    user = (f"People: {persons}. Length: {length}.\n<Input>\n{prompt}\n</Input>")
+    return [{"role": "system", "content": SYSTEM + schema}, {"role": "user", "content": user}]
+
+
+def extract_json(content: str) -> dict:
+    """The JSON object in a model's answer (bare, or inside ``` fences / surrounding text)."""
+    if not isinstance(content, str) or not content.strip():
+        raise ValueError("the answer is empty")
+    if len(content) > MAX_ANSWER:
+        raise ValueError(f"the answer is longer than {MAX_ANSWER} characters")
+    text = re.sub(r"^\s*```(?:json)?\s*|\s*```\s*$", "", content.strip())
+    start, end = text.find("{"), text.rfind("}")
+    if start < 0 or end <= start:
+        raise ValueError("the answer contains no JSON object")
+    try:
+        data = json.loads(text[start:end + 1])
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"the answer is not valid JSON ({exc.msg} at character {exc.pos})") from None
+    if not isinstance(data, dict):
+        raise ValueError("the answer is not a JSON object")
+    return data
+
+
+def to_plan(answer: LLMAnswer, prompt: str, persons: int, seconds: float | None) -> Plan:
+    """Frames for the model's steps (scaled to `seconds`), validated as a Plan."""
+    est = [s.seconds for s in answer.segments]
+    total = max(1, round((seconds if seconds else min(sum(est), 60.0)) * FPS))
+    if len(est) > total // 10:
+        raise ValueError(f"{len(est)} steps do not fit in {total / FPS:g} s")
+    frames, segments, start = allocate(est, total), [], 0
+    for i, (s, n) in enumerate(zip(answer.segments, frames)):
+        if any(p >= persons or p < 0 for p in s.persons):
+            raise ValueError(f"segment {i}: persons {s.persons} for a plan of {persons} person(s)")
+        roles = ({k: v for k, v in s.roles.items() if k in ("0", "1")} or None) if s.roles and \
+            persons == 2 else None
+        segments.append({**s.model_dump(exclude={"persons", "roles", "seconds"}), "index": i,
+                         "persons": sorted(set(s.persons)), "roles": roles, "seconds": n / FPS,
+                         "start": start, "end": start + n})
+        start += n
+    return Plan(prompt=prompt, rewritten=answer.rewritten, persons=persons, seconds=total / FPS,
+                segments=segments, reasons=answer.reasons, planner="llm")
+
+
+def ask(prompt: str, persons: int, seconds: float | None, settings,
+        transport: httpx.BaseTransport | None = None) -> Plan:
+    """The LLM's plan; raises ValueError / httpx errors when there is none."""
+    url = settings.llm_base_url.rstrip("/") + "/chat/completions"
+    headers = {"Content-Type": "application/json"}
+    if settings.llm_api_key is not None:
+        headers["Authorization"] = f"Bearer {settings.llm_api_key.get_secret_value()}"
+    body = {"model": settings.llm_model, "messages": _messages(prompt, persons, seconds),
+            "temperature": 0, "response_format": {"type": "json_object"}}
+    with httpx.Client(timeout=settings.llm_timeout_s, transport=transport) as client:
+        r = client.post(url, json=body, headers=headers)
+    if r.status_code != 200:
+        raise ValueError(f"the endpoint answered HTTP {r.status_code}")
+    try:
+        content = r.json()["choices"][0]["message"]["content"]
+    except (ValueError, KeyError, IndexError, TypeError):
+        raise ValueError("the endpoint's answer is not an OpenAI chat completion") from None
+    try:
+        answer = LLMAnswer.model_validate(extract_json(content))
+        return to_plan(answer, prompt, persons, seconds)
+    except ValidationError as exc:
+        raise ValueError(f"the answer does not match the plan schema: {readable(exc)}") from None
+
+
+def llm_plan(prompt: str, persons: int, seconds: float | None, settings,
+             fallback: Callable[[], Plan], transport: httpx.BaseTransport | None = None) -> Plan:
+    """The LLM's plan, or the fallback's with `fallback_reason` saying what went wrong."""
+    try:
+        plan = ask(prompt, persons, seconds, settings, transport)
+        plan.reasons.insert(0, f"llm: planned by {settings.llm_model}")
+        return plan
+    except httpx.TimeoutException:
+        why = f"timed out after {settings.llm_timeout_s:g} s"
+    except httpx.HTTPError as exc:
+        why = f"request failed ({type(exc).__name__}: {exc})"
+    except ValueError as exc:
+        why = str(exc)
+    plan = fallback()
+    plan.fallback_reason = f"LLM planner {settings.llm_model!r}: {why}; the embedded planner answered"
+    return plan

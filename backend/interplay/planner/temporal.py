@@ -1,0 +1,254 @@
+"""Temporal segmentation: one rewritten prompt → ordered clauses, one action each (CoMA's
+temporal segment step).
+
+    split("a person sits down, stands up and then does three jumps. finally they bow")
+      → [Clause("a person sits down"), Clause("stands up"), Clause("jumps three times", repeat=3),
+         Clause("they bow")]
+
+Sequence markers: sentence ends, "then", "and then", "after that", "afterwards", "next",
+"finally", "followed by", ordinals ("second, …"), "before"/"after" (reordered to the order
+things happen), a comma or "and" in front of a new finite verb, "from a walk to a run", and
+"… to <whole-body verb>" ("gets up to jump"). Simultaneous markers ("while", "as", "with",
+", <verb>ing") stay inside a clause; the decomposer turns them into part edits. Counts ("three
+times", "twice", "two squats") become `repeat`; "alternating between A and B four times"
+becomes four clauses A, B, A, B.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from interplay.planner.verbs import DOING_NOUNS, gerund, lookup, noun_verb, third
+
+NUMBERS = {"once": 1, "one": 1, "twice": 2, "two": 2, "thrice": 3, "three": 3, "four": 4,
+           "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10}
+PRONOUNS = {"he", "she", "they", "it", "someone", "somebody", "one", "both", "i", "we", "you",
+            "everyone", "each"}
+DETS = {"the", "a", "an", "this", "that", "his", "her", "their", "my", "our", "two", "one",
+        "another", "each", "both"}
+PART_WORDS = {"left", "right", "arm", "arms", "hand", "hands", "leg", "legs", "foot", "feet",
+              "fist", "fists", "knee", "knees", "elbow", "elbows", "head", "body", "other"}
+
+
+@dataclass
+class Clause:
+    text: str
+    repeat: int = 1
+    group: tuple[int, int] | None = None   # (k, n): k-th of n clauses split from one action
+
+
+_SENT = re.compile(r"(?<=[.!?;])\s+|;\s*|(?<=[a-z])\.\s*$")
+_CONNECT = re.compile(
+    r"\s*,?\s*\b(?:and\s+then|and\s+afterwards?|and\s+after\s+that|and\s+finally|and\s+lastly|"
+    r"and\s+next|after\s+that|afterwards?|then|next(?!\s+to)|finally|lastly|subsequently|"
+    r"followed\s+by|and\s+later|later\s+on|later|in\s+the\s+end|"
+    r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
+_LEAD = re.compile(r"^(?:and|also|so|but|first(?:ly)?|at\s+first|to\s+start|to\s+begin\s+with|"
+                   r"initially|then)\b[,\s]*")
+_COUNT = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+times|"
+                    r"(once|twice|thrice))\b")
+_LIGHT_CHAIN = re.compile(
+    r"\b(start|starts|started|starting|begin|begins|began|beginning|keep|keeps|kept|keeping|"
+    r"continue|continues|continued|continuing|try|tries|tried|trying|attempt|attempts|attempted|"
+    r"attempting|transition|transitions|transitioned|transitioning|proceed|proceeds|proceeded|"
+    r"proceeding)\s+(?:to\s+|into\s+|on\s+)?(\w+)")
+_NOUN_ACT = re.compile(
+    r"\b(?:(do|does|did|doing|perform|performs|performed|performing|make|makes|made|making|throw|"
+    r"throws|threw|throwing|take|takes|took|taking|give|gives|gave|giving|execute|executes|"
+    r"executed|executing)\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
+    r"several|a\s+few)\s+)?((?:(?:full|quick|big|small|deep|little|high|low|single|double|"
+    r"perfect|powerful|fast|slow)\s+)*)([\w-]+)\b")
+_FROM_TO = re.compile(
+    r"(?:(?:picks?|picked|picking)\s+up\s+speed\s+|speeds?\s+up\s+|(?:goes|went|transitions?|"
+    r"changes?|switch(?:es)?|moves?)\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?"
+    r"(\w+)\b")
+_ALTERNATE = re.compile(r"(?:,?\s*while\s+|,\s*)?alternat\w*\s+between\s+(.+?)\s+and\s+(.+?)"
+                        r"(?:\s+(one|two|three|four|five|six|seven|eight|\d+)\s+times|\s+(twice))?"
+                        r"\s*$")
+
+
+def _verb_in(word: str, like: str) -> str | None:
+    """`word` ("sitting", "ran") as the verb in the form of `like` ("starts" → "sits")."""
+    hit = lookup(word) or ((lookup(noun_verb(word)) if noun_verb(word) else None))
+    if hit is None or hit[0].kind == "light":
+        return None
+    form = lookup(like)[1] if lookup(like) else "third"
+    return gerund(hit[0].base) if form == "gerund" else third(hit[0].base)
+
+
+def normalize(text: str) -> str:
+    """Lower case, present tense chains: "is running" → "runs", "starts hopping" → "hops",
+    "transitions to sitting" → "sits", "gets up" / "rises to standing" → "stands up"."""
+    t = text.lower().replace("’", "'").replace("‘", "'").replace("“", '"').replace("”", '"')
+    t = re.sub(r"\"|(?<![a-z])'|'(?![a-z])", "", t)
+    t = re.sub(r"\b(?:is|are|was|were|has\s+been|have\s+been)\s+(\w+ing)\b",
+               lambda m: _verb_in(m.group(1), "runs") or m.group(0), t)
+    t = re.sub(r"\b(get|gets|got|getting)\s+(?:back\s+)?up\b",
+               lambda m: ("standing" if m.group(1) == "getting" else "stands") + " up", t)
+    t = re.sub(r"\b(rise|rises|rose|rising)\s+to\s+(?:standing|(?:a\s+)?stand|(?:his|her|their)\s+feet)\b",
+               lambda m: ("standing" if m.group(1) == "rising" else "stands") + " up", t)
+    t = _LIGHT_CHAIN.sub(lambda m: _verb_in(m.group(2), m.group(1)) or m.group(0), t)
+    return re.sub(r"\s+", " ", t).strip()
+
+
+def _noun_to_verb(text: str) -> tuple[str, int]:
+    """"… does two squats …" / "a full turn" → ("… squats …", 2) / ("turns around", 1): a motion
+    noun after a light verb (anywhere), or a clause that is only a motion noun phrase."""
+    for m in _NOUN_ACT.finditer(text):
+        light, det, adj, noun = m.groups()
+        if light is None and (m.start() > 0 or not (det or adj)
+                              or any(lookup(w) for w in text[m.end():].split())):
+            continue                        # a bare noun only counts alone ("a full turn")
+        count = int(det) if (det or "").isdigit() else NUMBERS.get(det or "", 1)
+        head, rest = text[:m.start()], text[m.end():]
+        key = noun[:-1] if noun.endswith("s") and noun[:-1] in DOING_NOUNS else noun
+        if key in DOING_NOUNS:
+            return f"{head}does a {key}{rest}", count
+        verb = noun_verb(noun)
+        if verb is None:
+            continue
+        around = " around" if verb in ("turn", "spin") and "full" in (adj or "") else ""
+        return f"{head}{third(verb)}{around}{rest}", count
+    return text, 1
+
+
+def _clean(piece: str) -> tuple[str, int]:
+    piece = piece.strip(" ,.;:!?")
+    while True:
+        new = _LEAD.sub("", piece).strip(" ,")
+        if new == piece:
+            break
+        piece = new
+    piece = re.sub(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+", " ", piece)
+    piece = re.sub(r"\s+", " ", piece).strip(" ,")
+    first = piece.split(" ", 1)[0] if piece else ""
+    hit = lookup(first)
+    if hit and hit[1] == "gerund" and hit[0].kind != "light":    # "before jumping" → "jumps"
+        piece = third(hit[0].base) + piece[len(first):]
+    piece, count = _noun_to_verb(piece)
+    m = _COUNT.search(piece)
+    if m:
+        word = m.group(1) or m.group(2)
+        count = int(word) if word.isdigit() else NUMBERS[word]
+    elif count > 1:
+        piece += " twice" if count == 2 else f" {count} times"
+    return piece.strip(" ,"), count
+
+
+def starts_action(text: str) -> bool:
+    """Does this text begin with a (subject and a) finite verb, i.e. a new action?"""
+    words = re.sub(r"^(?:and|then|also)\s+", "", text.strip(" ,")).split()
+    if not words:
+        return False
+    i, plural = 0, False
+    if words[0] in PRONOUNS:
+        i, plural = 1, words[0] in ("they", "both", "we", "you", "i")
+    elif words[0] in DETS:
+        for j in range(1, min(4, len(words))):
+            if words[j] in PART_WORDS or words[j] in ("to", "of", "with", "in", "on"):
+                return False
+            if lookup(words[j]):
+                i, plural = j, words[0] == "two" or words[j - 1].endswith("s")
+                break
+        else:
+            return False
+    if i >= len(words):
+        return False
+    hit = lookup(words[i])
+    if hit is None:
+        return False
+    return hit[1] in ("third", "past") or (hit[1] == "base" and plural)
+
+
+def _split_and(fragment: str) -> list[str]:
+    parts, out = re.split(r"\s+and\s+", fragment), []
+    for p in parts:
+        if out and starts_action(p):
+            out.append(p)
+        elif out:
+            out[-1] += " and " + p
+        else:
+            out.append(p)
+    return out
+
+
+def _split_to(text: str) -> list[str]:
+    """"stands up to jump" → ["stands up", "jump"] when a whole-body verb follows "to"."""
+    m = re.search(r"\s+to\s+(\w+)", text)
+    if m:
+        hit = lookup(m.group(1))
+        head = text[:m.start()].split()
+        has_verb = any((h := lookup(w)) and h[0].kind != "light" for w in head)
+        if hit and hit[0].kind in ("whole", "travel") and hit[1] != "gerund" and has_verb:
+            return [text[:m.start()], third(hit[0].base) + text[m.end():]]
+    return [text]
+
+
+def _reorder(sentence: str) -> list[str]:
+    """Pieces of a sentence in the order they happen ("before"/"after")."""
+    for rx, order in ((r"^(?:before|prior\s+to)\s+(.+?),\s*(.+)$", (1, 0)),
+                      (r"^after\s+(?!that\b)(.+?),\s*(.+)$", (0, 1)),
+                      (r"^(.+?)\s+(?:before|prior\s+to)\s+(.+)$", (0, 1)),
+                      (r"^(.+?)\s+after\s+(?!that\b|wards?\b)(.+)$", (1, 0))):
+        m = re.match(rx, sentence)
+        if m:
+            return [m.group(g + 1) for g in order]
+    return [sentence]
+
+
+def _expand(text: str) -> list[tuple[str, tuple[int, int] | None]]:
+    """"from a walk to a run, holding X" → two clauses; alternation → n clauses."""
+    m = _FROM_TO.search(text)
+    if m:
+        a, b = (noun_verb(w) or (lookup(w)[0].base if lookup(w) else None) for w in m.groups())
+        if a and b:
+            head, tail = text[:m.start()].strip(), text[m.end():]
+            head = head + " " if head else ""
+            return [(f"{head}{third(a)}{tail}", None), (f"{third(b)}{tail}", None)]
+    m = _ALTERNATE.search(text)
+    if m:
+        main = text[:m.start()].strip(" ,")
+        acts = [_act(m.group(1)), _act(m.group(2))]
+        word = m.group(3) or m.group(4) or ""
+        n = int(word) if word.isdigit() else NUMBERS.get(word, 2)
+        doing = []                                          # "taps the foot" → "tapping the foot"
+        for act in acts:
+            verb, _, rest = act.partition(" ")
+            doing.append(f"{gerund(lookup(verb)[0].base)} {rest}".strip() if lookup(verb) else act)
+        return [(f"{main} while {doing[k % 2]}" if main else acts[k % 2], (k, n)) for k in range(n)]
+    return [(text, None)]
+
+
+def _act(phrase: str) -> str:
+    """"foot taps" → "taps the right foot", "hand claps" → "claps the hands"."""
+    words = phrase.split()
+    verb = noun_verb(words[-1]) or (lookup(words[0])[0].base if lookup(words[0]) else words[-1])
+    obj = [w for w in words if w != words[-1]]
+    thing = {"foot": "the right foot", "feet": "the feet", "hand": "the hands",
+             "hands": "the hands", "toe": "the right foot", "knee": "the right knee"}
+    return f"{third(verb)} {thing.get(obj[-1], ' '.join(obj)) if obj else ''}".strip()
+
+
+def split(text: str) -> list[Clause]:
+    """Ordered clauses of a normalised prompt."""
+    pieces: list[str] = []
+    for sentence in _SENT.split(text):
+        for part in _reorder(sentence.strip(" .!?;")):
+            pieces.extend(p for p in _CONNECT.split(part) if p and p.strip(" ,"))
+    clauses: list[Clause] = []
+    for piece in pieces:
+        fragments: list[str] = []
+        for frag in re.split(r"\s*,\s*", piece):
+            for k, sub in enumerate(_split_and(frag)):
+                if k == 0 and fragments and not starts_action(sub):
+                    fragments[-1] += ", " + sub      # a modifier of the previous action
+                else:
+                    fragments.append(sub)
+        for frag in fragments:
+            for part in _split_to(frag):
+                for text_k, group in _expand(part):
+                    clean, count = _clean(text_k)
+                    if clean:
+                        clauses.append(Clause(clean, count, group))
+    return clauses

@@ -1,0 +1,141 @@
+"""Trajectory phrases → a TrajectorySpec (what CoMA's planner forwards to the trajectory editor).
+
+    parse("walks in a circle counterclockwise")      → circle, clockwise=False
+    parse("runs 5 metres forward")                   → line, distance_m=5, waypoints [[0,0],[0,5]]
+    parse("walks 4 m and turns right at 3 o'clock")  → line, turn_at={"clock": 3, "side": "right"}
+    parse("walks backwards")                         → polyline [[0, 0], [0, -4]]
+
+Coordinates: metres on the floor, [x, z] in the person's start frame, +z ahead, +x to their
+left (as `curves.make_curve` draws them: a line runs along +z, `turn_at` turns it half-way).
+Clockwise is seen from above; walking "in a circle to the right" is clockwise. Plain
+"forward" (a free walk or run) is no trajectory: Table 8 marks only shapes, paths and
+distances as explicit trajectories.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from interplay.planner.schema import TrajectorySpec
+
+_NUM = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+        "nine": 9, "ten": 10, "twenty": 20, "a": 1, "half a": 0.5, "a half": 0.5}
+_UNIT = {"m": 1.0, "metre": 1.0, "meter": 1.0, "metres": 1.0, "meters": 1.0, "step": 0.7,
+         "steps": 0.7, "foot": 0.3048, "feet": 0.3048, "ft": 0.3048, "yard": 0.9144,
+         "yards": 0.9144, "pace": 0.7, "paces": 0.7}
+_NUMBER = r"(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty|half\s+a|a)"
+_DISTANCE = re.compile(rf"\b{_NUMBER}\s*-?\s*(m|metres?|meters?|steps?|feet|foot|ft|yards?|paces?)\b"
+                       r"(?:\s+(forward|forwards|ahead|backward|backwards|back|to\s+the\s+left|"
+                       r"to\s+the\s+right|left|right|sideways))?")
+_SIZE = re.compile(rf"\b(?:(?:radius|diameter)\s+(?:of\s+)?)?{_NUMBER}\s*-?\s*(?:m|metres?|meters?)\b"
+                   r"(?:\s*(?:wide|across|diameter|radius|sides?|sided|big|large)\b)?")
+_CLOCK = re.compile(r"\b(?:turns?|turning|turned|heads?|goes|walks|runs)?\s*(left|right)?\s*"
+                    r"(?:at|to|towards?|toward)\s+(\d{1,2}|one|two|three|four|five|six|seven|eight|"
+                    r"nine|ten|eleven|twelve)\s*o'?\s*clock\b")
+_CLOCK_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+                "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
+_SHAPES = [  # (pattern, shape); first match wins
+    (r"\bfigure[\s-]*(?:of\s+)?(?:eight|8)\b", "figure_eight"),
+    (r"\bzig[\s-]?zag", "zigzag"),
+    (r"\b(?:s[\s-]?(?:shape|shaped|curve|path|line)|shape\s+of\s+(?:an?\s+|the\s+letter\s+)?s\b|"
+     r"letter\s+s\b|serpentine|snake\s+path|winding)", "s_curve"),
+    (r"\bheart(?:[\s-]shaped)?\b", "heart"),
+    (r"\bspiral", "spiral"),
+    (r"\bsquare\b|\brectangle\b", "square"),
+    (r"\b(?:semi[\s-]?circle|half[\s-]circle|arc|curve)\b", "arc"),
+    (r"\bcircles?\b|\bcircular\b|\bround\s+in\s+a\s+loop\b|\bloop\b", "circle"),
+    (r"\bstraight\s+line\b|\bin\s+a\s+line\b|\bstraight\s+(?:ahead|forward)\b", "line"),
+    (r"\b(?:around\s+the\s+room|wanders?|wandering|aimlessly|randomly|around\s+freely)\b", "free"),
+]
+_SIDE = r"\b(?:(?:sideways\s+)?(?:to|towards)\s+(?:the|his|her|their)\s+{0}|{0}wards?)\b"
+_DIRECTION = [(r"\bback(?:ward)?s?\b(?!\s+up)|\bin\s+reverse\b", "backward"),
+              (_SIDE.format("left"), "left"), (_SIDE.format("right"), "right")]
+_TRAVEL_HINT = re.compile(r"\b(?:walk|run|jog|sprint|hop|skip|march|crawl|move|go|step|sneak|"
+                          r"stroll|dodge|slide|moonwalk|shuffle|limp)\w*\b")
+DEFAULT_LINE = 4.0    # metres of a sideways/backwards walk with no distance given
+_HEADING = {"forward": (0.0, 1.0), "backward": (0.0, -1.0), "left": (1.0, 0.0), "right": (-1.0, 0.0)}
+
+
+def _number(word: str) -> float:
+    word = re.sub(r"\s+", " ", word)
+    return float(word) if re.match(r"^\d", word) else float(_NUM[word])
+
+
+def _direction(text: str) -> str | None:
+    for rx, name in _DIRECTION:
+        if re.search(rx, text):
+            return name
+    return None
+
+
+def parse(text: str) -> TrajectorySpec | None:
+    """The trajectory a clause asks for, or None for free or in-place motion."""
+    t = text.lower()
+    clock = _CLOCK.search(t)
+    if clock:
+        hour = clock.group(2)
+        hour = int(hour) if hour.isdigit() else _CLOCK_WORDS[hour]
+        if 1 <= hour <= 12:
+            side = clock.group(1) or ("right" if hour < 6 else "left" if hour > 6 else None)
+            dist = _DISTANCE.search(t)
+            extra = {"distance_m": round(_number(dist.group(1)) * _UNIT[dist.group(2)], 3)} if dist else {}
+            return TrajectorySpec(shape="line", turn_at={"clock": hour, "side": side},
+                                  direction="forward", text=text.strip(), **extra)
+    travel = _TRAVEL_HINT.search(t) is not None or re.search(r"\b(?:path|trajectory|route)\b", t)
+    # Shapes only count for travel: "swings the arm in circles" is not a path.
+    shape = next((s for rx, s in _SHAPES if re.search(rx, t)), None) if travel else None
+    dist = _DISTANCE.search(re.sub(r"\bon\s+(?:one|the\s+\w+|a)\s+foot\b", "", t)) if travel else None
+    distance = _number(dist.group(1)) * _UNIT[dist.group(2)] if dist else None
+    direction = _direction(dist.group(3) or "") if dist and dist.group(3) else None
+    if shape is None and direction is None and travel:
+        direction = _direction(t)
+    if shape is None and (distance is not None or direction is not None):
+        shape = "line"
+    if shape is None:
+        return None
+    spec: dict = {"shape": shape, "text": text.strip()}
+    if shape in ("circle", "arc", "spiral", "figure_eight", "square", "heart"):
+        if re.search(r"\b(?:counter[\s-]?clockwise|anti[\s-]?clockwise)\b", t):
+            spec["clockwise"] = False
+        elif re.search(r"\bclockwise\b", t):
+            spec["clockwise"] = True
+        elif re.search(r"\bto\s+the\s+right\b|\bturning\s+right\b", t):
+            spec["clockwise"] = True
+        elif re.search(r"\bto\s+the\s+left\b|\bturning\s+left\b", t):
+            spec["clockwise"] = False
+        size = _SIZE.search(t)
+        if size and (not dist or re.search(r"wide|across|diameter|radius|side|big|large", size.group(0))
+                     or re.match(r"\s*(?:circle|square|heart|spiral|figure|arc|semi)", t[size.end():])):
+            spec["size_m"] = _number(size.group(1)) * (2.0 if "radius" in size.group(0) else 1.0)
+            distance = None                      # "a 3 m circle": its size, not the path length
+        turns = re.search(r"\b(\d+(?:\.\d+)?|one|two|three|four|five)\s+"
+                          r"(?:times|turns|loops|laps|circles)\b", t)
+        if turns and shape in ("circle", "spiral"):
+            spec["turns"] = _number(turns.group(1))
+        elif shape == "arc":
+            spec["turns"] = 0.5
+    if shape == "line":
+        spec["direction"] = direction or "forward"
+        if distance is not None:
+            spec["distance_m"] = round(distance, 3)
+        if spec["direction"] != "forward":      # a line along +z is the forward one: others as points
+            d, (hx, hz) = distance or DEFAULT_LINE, _HEADING[spec["direction"]]
+            spec["shape"] = "polyline"
+            spec["waypoints"] = [(0.0, 0.0), (round(hx * d, 3), round(hz * d, 3))]
+    elif distance is not None:
+        spec["distance_m"] = round(distance, 3)
+    return TrajectorySpec(**spec)
+
+
+def path_length(spec: TrajectorySpec) -> float | None:
+    """Metres walked along a trajectory (None when it is not known: free paths, turns)."""
+    if spec.distance_m:
+        return spec.distance_m
+    if spec.waypoints and len(spec.waypoints) > 1:
+        return float(sum(math.dist(a, b) for a, b in zip(spec.waypoints, spec.waypoints[1:])))
+    size = spec.size_m or 2.0
+    circle = math.pi * size * (spec.turns or 1.0)
+    return {"circle": circle, "arc": circle, "spiral": circle * 0.6, "figure_eight": 2 * circle,
+            "square": 4 * size, "heart": 3.5 * size, "zigzag": 3.0 * size, "s_curve": 2.5 * size,
+            "line": None, "polyline": None, "free": None}[spec.shape]

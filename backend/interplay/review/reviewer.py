@@ -1,0 +1,225 @@
+"""The motion reviewer (CoMA §3, Algorithm 1 lines 7–16, appendix F) without a video model:
+captions per body part from pose codes (`motion.posecodes`), a text–motion alignment score
+(the evaluator's cosine when its weights load, else the agreement of the captions with the
+plan by MiniLM — the result says which), commonsense checks (`review_checks`), and a
+comparison with the plan in the spirit of F.3 (`review_text`): each part with a planned edit
+is confirmed by its caption or gets an `edit_part` instruction; bad frame windows get an
+`inbetween`; a segment whose body caption contradicts its base motion (or that misses a
+touch the text asks for) gets `regenerate` with a new seed.
+
+    rv = review(segment, [joints])            # Review: captions, score, checks, instructions
+    out = correct(segment, [joints], apply)   # ≤ K rounds; a round that makes it worse stops
+
+`apply(instruction, people, seed) -> people` runs one instruction through the generator's
+edit operations (the orchestrator supplies it); it raises CannotApply when the generator
+cannot run that kind (e.g. part edits without SPAM)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import asdict, dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from interplay.motion import skeleton as sk
+from interplay.motion.captions import PARTS, summarise
+from interplay.motion.posecodes import caption_clip
+from interplay.review.checks import Checks, commonsense, worse
+from interplay.review.agreement import BODY_CUES, caption_agreement, confirms
+
+PLAN_PART = {"left_arm": "left_upper", "right_arm": "right_upper",
+             "left_leg": "left_lower", "right_leg": "right_lower"}
+REGENERATE_SCORE = 0.25       # caption agreement under this, with no body cue: the segment is off
+MAX_INSTRUCTIONS = 3          # per round (a regenerate goes alone)
+SCORE_EPS = 1e-6
+
+
+class CannotApply(RuntimeError):
+    """The generator cannot run this instruction (the message says why)."""
+
+
+@dataclass
+class Review:
+    segment: int
+    round: int
+    captions: dict                 # part → caption text (person 0), parts as in motion.captions
+    summary: str
+    score: float
+    score_kind: str                # "evaluator" | "caption_agreement"
+    confirmed: dict                # planned part → bool
+    body_confirmed: bool | None    # None: the base has no cue to check
+    checks: dict
+    instructions: list = field(default_factory=list)
+    verdict: str = "ok"            # "ok" | "correct"
+    person_captions: list = field(default_factory=list)
+
+    @property
+    def metrics(self) -> dict:
+        return self.checks["metrics"]
+
+    def event(self) -> dict:
+        """The job stream's `review` event."""
+        return {"type": "review", "segment": self.segment, "round": self.round,
+                "captions": self.captions, "summary": self.summary, "score": self.score,
+                "score_kind": self.score_kind, "confirmed": self.confirmed,
+                "checks": self.checks, "instructions": self.instructions,
+                "verdict": self.verdict}
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+
+def _seg(segment) -> dict:
+    return segment.model_dump(mode="json") if hasattr(segment, "model_dump") else dict(segment)
+
+
+def part_captions(joints: np.ndarray) -> tuple[dict[str, list[str]], str]:
+    """(part → distinct caption texts in time order, one-sentence summary) of one person."""
+    caps = caption_clip(np.asarray(joints, dtype=np.float64))
+    texts: dict[str, list[str]] = {p: [] for p in PARTS}
+    for c in sorted(caps, key=lambda c: c.start):
+        if c.text not in texts[c.part]:
+            texts[c.part].append(c.text)
+    return texts, summarise(caps)
+
+
+def _texts(seg: dict, persons: int) -> list[str]:
+    roles = seg.get("roles") or {}
+    return [roles.get(str(i)) or seg["prompt"] for i in range(persons)]
+
+
+def review(segment_plan, joints, evaluator=None, encoder=None, round: int = 0) -> Review:
+    """Review one segment: `segment_plan` (plan_schema.Segment or its JSON), `joints` one
+    (T, 22, 3) array per person for the segment's frames (T ≥ 3)."""
+    seg = _seg(segment_plan)
+    people = [np.asarray(p, dtype=np.float64) for p in joints]
+    if not people or any(p.ndim != 3 or p.shape[1:] != (sk.NUM_JOINTS, 3) for p in people):
+        raise ValueError(f"joints must be one (T, 22, 3) array per person, got "
+                         f"{[getattr(p, 'shape', None) for p in people]}")
+    if encoder is None:
+        from interplay.text.encoder import get_encoder
+        encoder = get_encoder()
+    captioned = [part_captions(p) for p in people]
+    texts = _texts(seg, len(people))
+    if evaluator is not None:
+        score = float(np.mean([evaluator.score(p, t) for p, t in zip(people, texts)]))
+        kind = "evaluator"
+    else:
+        score = float(np.mean([caption_agreement(s, t, encoder)
+                               for (_, s), t in zip(captioned, texts)]))
+        kind = "caption_agreement"
+    parts0, summary0 = captioned[0]
+    edits = {k: v for k, v in (seg.get("edits") or {}).items() if isinstance(v, str) and v.strip()}
+    confirmed, instructions = {}, []
+    for part, planned in edits.items():
+        model_part = PLAN_PART.get(part, part)
+        ok, _ = confirms(planned, parts0.get(model_part, []), encoder=encoder)
+        confirmed[part] = ok
+        if not ok:
+            said = "; ".join(parts0.get(model_part, [])) or "nothing"
+            instructions.append({"kind": "edit_part", "part": part, "prompt": planned,
+                                 "reason": f"the plan says '{planned}', the caption says '{said}'"})
+    base = seg.get("base") or seg["prompt"]
+    body_ok, bodies = None, [t for c, _ in captioned for t in c["body"]]
+    # The body caption may show the base ("stands") or the whole step ("kicks"): either counts.
+    for text in dict.fromkeys((base, seg["prompt"])):
+        if any(re.search(p, text.lower()) for p, _ in BODY_CUES):
+            body_ok = body_ok or confirms(text, bodies, BODY_CUES)[0]
+    checks: Checks = commonsense(people, seg["prompt"])
+    regenerate = None
+    if body_ok is False:
+        regenerate = (f"the plan says '{base}', the body caption says "
+                      f"'{'; '.join(parts0['body'])}'")
+    elif body_ok is None and kind == "caption_agreement" and score < REGENERATE_SCORE:
+        regenerate = f"the captions ('{summary0}') hardly agree with '{seg['prompt']}'"
+    elif "missing_contact" in checks.failed:
+        regenerate = checks.failed["missing_contact"]
+    if regenerate:
+        instructions = [{"kind": "regenerate", "prompt": seg["prompt"], "reason": regenerate}]
+    else:
+        instructions += [{"kind": "inbetween", "frames": [a, b], "prompt": seg["prompt"],
+                          "reason": f"{r} in frames {a}–{b}"} for a, b, r in checks.windows]
+    instructions = instructions[:MAX_INSTRUCTIONS]
+    return Review(segment=int(seg.get("index", 0)), round=round,
+                  captions={p: "; ".join(v) for p, v in parts0.items()}, summary=summary0,
+                  score=round_(score), score_kind=kind, confirmed=confirmed,
+                  body_confirmed=body_ok, checks=checks.to_json(), instructions=instructions,
+                  verdict="correct" if instructions else "ok",
+                  person_captions=[s for _, s in captioned])
+
+
+def round_(x: float) -> float:
+    return float(np.round(x, 4))
+
+
+@dataclass
+class Corrected:
+    people: list                   # final joints per person (segment frames)
+    reviews: list                  # Review per round (round 0 = before any correction)
+    corrections: list              # correction events (dicts)
+
+    @property
+    def first(self) -> Review:
+        return self.reviews[0]
+
+    @property
+    def last(self) -> Review:
+        return self.reviews[-1]
+
+    def history(self) -> dict:
+        return {"reviews": [r.to_json() for r in self.reviews], "corrections": self.corrections}
+
+
+def correct(segment_plan, joints, apply: Callable, evaluator=None, rounds: int = 2,
+            tolerance: float = 0.1, seed: int = 0, encoder=None,
+            emit: Callable[[dict], None] | None = None) -> Corrected:
+    """Algorithm 1's self-correction loop on one segment: review, run the instructions through
+    `apply`, at most `rounds` rounds. A correction is kept only if the score does not drop and
+    no watched metric gets worse beyond `tolerance`; otherwise the previous motion is kept and
+    the loop stops. `emit` receives the review and correction events."""
+    if rounds < 0:
+        raise ValueError(f"rounds must be ≥ 0, got {rounds}")
+    emit = emit or (lambda e: None)
+    seg = _seg(segment_plan)
+    people = [np.asarray(p, dtype=np.float64) for p in joints]
+    current = review(seg, people, evaluator, encoder, round=0)
+    emit(current.event())
+    reviews, corrections, stop = [current], [], False
+    rng = np.random.default_rng([seed % 2**63, int(seg.get("index", 0))])
+    for r in range(1, rounds + 1):
+        if current.verdict == "ok" or stop:
+            break
+        changed = False
+        for instr in current.instructions:
+            event = {"type": "correction", "segment": current.segment, "round": r,
+                     "instruction": instr, "accepted": False, "score_before": current.score,
+                     "score_after": None}
+            try:
+                candidate = apply(instr, people, int(rng.integers(2**31)))
+            except CannotApply as exc:
+                event["reason"] = str(exc)
+                corrections.append(event)
+                emit(event)
+                continue
+            after = review(seg, candidate, evaluator, encoder, round=r)
+            worse_keys = worse(current.metrics, after.metrics, tolerance)
+            event["score_after"] = after.score
+            if after.score + SCORE_EPS >= current.score and not worse_keys:
+                event["accepted"] = True
+                people = [np.asarray(p, np.float64) for p in candidate]
+                current, changed = after, True
+            else:
+                event["reason"] = ("the score dropped" if after.score + SCORE_EPS < current.score
+                                   else f"worse {', '.join(worse_keys)}")
+                stop = True
+            corrections.append(event)
+            emit(event)
+            if stop:
+                break
+        if not changed:
+            break
+        current = review(seg, people, evaluator, encoder, round=r)
+        emit(current.event())
+        reviews.append(current)
+    return Corrected(people=people, reviews=reviews, corrections=corrections)

@@ -1,0 +1,110 @@
+"""The studio generator with SPAM in front of retrieval: one person → SPAM (plan says so, frames
+stream in order and add up exactly), two people → retrieval, and retrieval with the reason in
+the plan when the weights are missing, broken or an untrained placeholder; edits through it."""
+
+from __future__ import annotations
+
+import shutil
+
+import numpy as np
+import pytest
+from tests.helpers.spam_stub import StubEncoder
+from tests.helpers.synthetic_motion import fk_motion, stand_in_clips
+
+from interplay.generators.retrieval.generator import CHUNK
+from interplay.generators.base import Request
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.spam.runtime import DEFAULT_DIR
+from interplay.generators.spam.runtime import part_texts
+from interplay.generators.base import EditUnavailable
+from interplay.generators.weights import placeholder_reason
+from interplay.generators.spam.generator import resolve_edit_part, segment_texts
+from interplay.generators.router import with_spam
+from interplay.motion import skeleton as sk
+
+
+@pytest.fixture(scope="module")
+def index():
+    return RetrievalIndex(stand_in_clips(), StubEncoder())
+
+
+@pytest.fixture(scope="module")
+def spam_gen(index):
+    return with_spam(index, DEFAULT_DIR, allow_untrained=True)
+
+
+def _weights(tmp_path, card: str | None) -> str:
+    d = tmp_path / "spam"
+    shutil.copytree(DEFAULT_DIR, d)
+    (d / "MODEL_CARD.md").unlink(missing_ok=True)
+    if card is not None:
+        (d / "MODEL_CARD.md").write_text(card)
+    return d
+
+
+def test_one_person_uses_spam_and_streams_exact_frames(spam_gen):
+    assert spam_gen.spam is not None
+    req = Request("a person walks forward, then jumps", persons=1, seconds=13.3, seed=4)
+    plan = spam_gen.plan(req)
+    assert plan["generator"] == "spam" and plan["seed"] == 4 and len(plan["segments"]) == 2
+    chunks = list(spam_gen.stream(req, plan))
+    starts = [s for s, _ in chunks]
+    sizes = [len(c[0]) for _, c in chunks]
+    assert starts == list(np.cumsum([0] + sizes[:-1])) and sum(sizes) == 266
+    assert max(sizes) <= CHUNK and all(len(c) == 1 for _, c in chunks)
+    motion = spam_gen.generate(req)
+    assert motion.frames == 266 and motion.plan["generator"] == "spam"
+    assert np.array_equal(motion.people[0], np.concatenate([c[0] for _, c in chunks]))
+
+
+def test_two_people_fall_back_to_retrieval_with_a_reason(spam_gen):
+    plan = spam_gen.plan(Request("two people dance salsa", persons=2, seconds=4, seed=1))
+    assert plan["generator"] == "retrieval" and "one person" in plan["generator_reason"]
+
+
+@pytest.mark.parametrize("case", ["missing", "broken", "placeholder"])
+def test_bad_weights_fall_back_to_retrieval(case, index, tmp_path):
+    if case == "missing":
+        d = tmp_path / "nothing"
+    elif case == "broken":
+        d = _weights(tmp_path, "# SPAM\n")
+        (d / "vq_decode.onnx").write_bytes(b"\x00" * 64)
+    else:
+        d = _weights(tmp_path, "# SPAM — placeholder\n\nUNTRAINED graphs\n")
+    gen = with_spam(index, d)
+    assert gen.spam is None
+    req = Request("a person walks forward", persons=1, seconds=3, seed=2)
+    plan = gen.plan(req)
+    assert plan["generator"] == "retrieval" and str(d) in plan["generator_reason"]
+    assert gen.generate(req).frames == 60
+    with pytest.raises(EditUnavailable, match="SPAM"):
+        gen.edit(fk_motion(40, "walk")[0], "left_arm", "waves", seed=0)
+
+
+def test_trained_card_is_served(tmp_path):
+    d = _weights(tmp_path, "# SPAM — model card\n\nTrained on …\n")
+    assert placeholder_reason(d, "SPAM") is None
+    assert placeholder_reason(_weights(tmp_path / "x", "# SPAM — placeholder\n"), "SPAM") is not None
+
+
+def test_edit_through_the_generator(spam_gen):
+    joints = fk_motion(80, "walk")[0].astype(np.float64)
+    edit, entry = spam_gen.edit(joints, "right_arm", "waves the right hand", frames=(8, 60), seed=3)
+    assert edit.parts == ("right_upper",) and entry["frames"] == [8, 60] and entry["seed"] == 3
+    assert np.array_equal(edit.joints[:8], joints[:8]) and np.array_equal(edit.joints[60:], joints[60:])
+    assert entry["untouched_change_cm"] < 0.5
+    assert resolve_edit_part("whole_body") == list(sk.PART_NAMES)
+    assert resolve_edit_part("Left Leg") == ["left_lower"]
+    with pytest.raises(ValueError, match="left_arm"):
+        resolve_edit_part("tail")
+    with pytest.raises(ValueError):
+        spam_gen.edit(joints, "left_arm", "   ", seed=0)
+
+
+def test_planned_part_edits_become_part_prompts():
+    seg = {"prompt": "a person walks while waving", "base": "a person walks",
+           "edits": {"left_arm": None, "right_arm": "waves the right hand", "left_leg": "",
+                     "right_leg": None}}
+    assert part_texts(segment_texts(seg)) == ["a person walks", "waves the right hand",
+                                              "a person walks", "a person walks"]
+    assert segment_texts({"prompt": "a person jumps", "edits": {}}) == "a person jumps"

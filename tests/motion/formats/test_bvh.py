@@ -1,0 +1,196 @@
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from interplay.motion import skeleton as sk
+from interplay.motion.formats.bvh import read_bvh, smpl22_positions, write_bvh
+from interplay.motion.kinematics import fit_to_skeleton
+from interplay.motion.retarget.cmu_daz import load_cmu_bvh, load_salsa_pair
+from tests.helpers.paths import REPO
+
+RAW = REPO / "tests" / "fixtures" / "raw"
+
+# Position channels interleaved with rotations on the root, a child with one rotation and a
+# Y-only position channel, a "YXZ" joint, another ZXY branch, two End Sites; CRLF and tabs.
+HAND_WRITTEN = "\r\n".join([
+    "HIERARCHY",
+    "ROOT Hips",
+    "{",
+    "\tOFFSET 0 0 0",
+    "\tCHANNELS 6 Xrotation Zposition Yrotation Xposition Zrotation Yposition",
+    "\tJOINT Slide",
+    "\t{",
+    "\t\tOFFSET 0.5 1 0",
+    "\t\tCHANNELS 2 Zrotation Yposition",
+    "\t\tJOINT Tip",
+    "\t\t{",
+    "\t\t  OFFSET   1 0 0",
+    "\t\t  CHANNELS 3 Yrotation Xrotation Zrotation",
+    "\t\t  End Site",
+    "\t\t  {",
+    "\t\t\tOFFSET 0 2 0",
+    "\t\t  }",
+    "\t\t}",
+    "\t}",
+    "\tJOINT Other",
+    "\t{",
+    "\t\tOFFSET 0 -1 0",
+    "\t\tCHANNELS 3 Zrotation Xrotation Yrotation",
+    "\t\tEnd Site",
+    "\t\t{",
+    "\t\t\tOFFSET 0 -1 0",
+    "\t\t}",
+    "\t}",
+    "}",
+    "MOTION",
+    "Frames:\t2",
+    "Frame Time:\t0.05",
+    # Hips: Xrot Zpos Yrot Xpos Zrot Ypos | Slide: Zrot Ypos | Tip: Yrot Xrot Zrot | Other: Zrot Xrot Yrot
+    "90 5 0 1 0 2   90 3   90 90 0   90 0 0",
+    "0 0 0 0 0 0    0 1    0 0 0     0 0 0",
+    "",
+])
+
+# Worked by hand: Rx(90) maps (x, y, z) → (x, -z, y), Rz(90) (x, y, z) → (-y, x, z),
+# Ry(90) (x, y, z) → (z, y, -x). Frame 0: Hips at (1, 2, 5); Slide = Hips + Rx·(0.5, 3, 0)
+# (its Y position channel replaces the offset's y); Tip = Slide + Rx·Rz·(1, 0, 0);
+# Tip's End Site = Tip + Rx·Rz·Ry·Rx·(0, 2, 0); Other = Hips + Rx·(0, -1, 0); its End Site
+# = Other + Rx·Rz·(0, -1, 0).
+EXPECTED = np.array([
+    # Hips        Slide          Tip            Other        Tip end         Other end
+    [[1, 2, 5], [1.5, 2, 8], [1.5, 2, 9], [1, 2, 4], [1.5, 2, 11], [2, 2, 4]],
+    [[0, 0, 0], [0.5, 1, 0], [1.5, 1, 0], [0, -1, 0], [1.5, 3, 0], [0, -2, 0]],
+], dtype=float)
+
+
+def test_reader_matches_hand_computed_positions():
+    bvh = read_bvh(HAND_WRITTEN)
+    assert bvh.names == ("Hips", "Slide", "Tip", "Other")
+    assert bvh.parents == (-1, 0, 1, 0)
+    assert bvh.channels[1] == ("Zrotation", "Yposition")
+    assert bvh.fps == pytest.approx(20.0) and bvh.num_frames == 2
+    assert bvh.end_site_names == ("Tip_end", "Other_end")
+    assert np.allclose(bvh.positions(), EXPECTED[:, :4], atol=1e-12)
+    assert np.allclose(bvh.positions(include_end_sites=True), EXPECTED, atol=1e-12)
+    named = bvh.named_positions()
+    assert np.allclose(named["Tip_end"], EXPECTED[:, 4], atol=1e-12)
+
+
+def test_reader_accepts_a_path_and_plain_newlines(tmp_path):
+    path = tmp_path / "hand.bvh"
+    path.write_text(HAND_WRITTEN.replace("\r\n", "\n"))
+    assert np.allclose(read_bvh(path).positions(), read_bvh(str(path)).positions())
+    assert np.allclose(read_bvh(path).positions(True), EXPECTED, atol=1e-12)
+
+
+@pytest.mark.parametrize("broken,word", [
+    (HAND_WRITTEN.replace("MOTION", "MOTIONS"), "MOTION"),
+    (HAND_WRITTEN.replace("Yposition\r\n\t\tJOINT", "Yspin\r\n\t\tJOINT"), "CHANNELS"),
+    (HAND_WRITTEN.replace("Frames:\t2", "Frames:\t3"), "3 frames"),
+    (HAND_WRITTEN.replace("\t}\r\n\tJOINT Other", "\tJOINT Other"), "brace"),
+    (HAND_WRITTEN.replace("0 0 0     0 0 0", "0 0 0     0 x 0"), "number"),
+    ("just some text", "no such file"),
+])
+def test_reader_rejects_malformed_files_with_a_reason(broken, word):
+    with pytest.raises(ValueError, match=word):
+        read_bvh(broken)
+
+
+def test_cmu_daz_file_has_the_expected_hierarchy():
+    bvh = read_bvh(RAW / "cmu-bvh" / "02" / "02_01.bvh")
+    assert bvh.names[:3] == ("hip", "abdomen", "chest") and len(bvh.names) == 43
+    assert bvh.channels[0][:3] == ("Xposition", "Yposition", "Zposition")
+    assert bvh.fps == pytest.approx(120, rel=1e-4) and bvh.num_frames == 344
+    pos = bvh.named_positions()
+    # Frame 0 is the converter's T-pose: hands level with the shoulders, 1.5 m eye height.
+    assert abs(pos["lHand"][0, 1] - pos["lShldr"][0, 1]) < 2.0
+    eyes = (pos["leftEye"][0, 1] + pos["rightEye"][0, 1]) / 2
+    assert 145 < eyes - pos["lFoot_end"][0, 1] < 160
+
+
+@pytest.fixture(scope="module")
+def real_clips():
+    walk = load_cmu_bvh(RAW / "cmu-bvh" / "02" / "02_01.bvh")[0]
+    jump = load_cmu_bvh(RAW / "cmu-bvh" / "16" / "16_01.bvh")[0]
+    (lead, follow), _, _ = load_salsa_pair(RAW / "cmu-salsa" / "60" / "60_01_scaled.bvh",
+                                           RAW / "cmu-salsa" / "61" / "61_01_scaled.bvh")
+    return {"walk": walk, "jump": jump, "lead": lead[:200], "follow": follow[:200]}
+
+
+@pytest.mark.parametrize("name", ["walk", "jump", "lead", "follow"])
+def test_write_then_read_reproduces_fitted_joints_within_1mm(real_clips, name):
+    joints = real_clips[name]
+    text = write_bvh(joints)
+    back = smpl22_positions(read_bvh(text))
+    assert back.shape == joints.shape
+    assert np.abs(back - joints).max() < 1e-3
+    # With the offsets given explicitly, too.
+    fitted, offsets = fit_to_skeleton(joints)
+    assert np.abs(smpl22_positions(read_bvh(write_bvh(joints, offsets=offsets))) - fitted).max() < 1e-3
+
+
+def test_written_file_is_a_standard_hierarchy(real_clips):
+    text = write_bvh(real_clips["walk"], fps=20)
+    lines = text.splitlines()
+    assert lines[0] == "HIERARCHY" and lines[1] == "ROOT pelvis"
+    assert sum(line.strip().startswith("JOINT ") for line in lines) == 21
+    assert sum(line.strip() == "End Site" for line in lines) == 5
+    assert sum("CHANNELS 3 " in line for line in lines) == 21
+    assert "\tCHANNELS 6 Xposition Yposition Zposition" in text
+    assert "Frame Time: 0.05000000" in text and f"Frames: {len(real_clips['walk'])}" in text
+    assert all(not line.startswith(" ") for line in lines)           # tabs only
+    assert "nan" not in text and "-0.000000 " not in text and "e-" not in text
+    bvh = read_bvh(text)
+    assert set(bvh.names) == set(sk.JOINT_NAMES)
+    assert np.allclose(bvh.offsets[0], 0)                              # root OFFSET 0
+    # Head, wrists and toes end the chains.
+    ends = {bvh.names[p] for p, _ in bvh.end_sites}
+    assert ends == {"head", "left_wrist", "right_wrist", "left_foot", "right_foot"}
+
+
+@pytest.mark.parametrize("bad,word", [
+    (np.zeros((10, 21, 3)), "22"), (np.zeros((0, 22, 3)), "T ≥ 1"),
+    (np.full((4, 22, 3), np.nan), "NaN"),
+])
+def test_writer_rejects_bad_input(bad, word):
+    with pytest.raises(ValueError, match=word):
+        write_bvh(bad)
+
+
+THREE = REPO / "node_modules" / "three"
+NODE_CHECK = """
+import { readFileSync } from 'node:fs';
+import { pathToFileURL } from 'node:url';
+const [three, { BVHLoader }] = await Promise.all([
+  import(pathToFileURL(process.argv[2] + '/build/three.module.js').href),
+  import(pathToFileURL(process.argv[2] + '/examples/jsm/loaders/BVHLoader.js').href)]);
+const result = new BVHLoader().parse(readFileSync(process.argv[3], 'utf8'));
+const bones = result.skeleton.bones, mixer = new three.AnimationMixer(bones[0]);
+const action = mixer.clipAction(result.clip);
+action.setLoop(three.LoopOnce); action.clampWhenFinished = true; action.play();
+const out = {}, v = new three.Vector3();
+for (let f = 0; f < Number(process.argv[4]); f++) {
+  mixer.setTime(f * Number(process.argv[5]));
+  bones[0].updateMatrixWorld(true);
+  for (const b of bones) if (b.name !== 'ENDSITE') (out[b.name] ??= []).push(b.getWorldPosition(v).toArray());
+}
+console.log(JSON.stringify(out));
+"""
+
+
+@pytest.mark.skipif(shutil.which("node") is None or not THREE.is_dir(),
+                    reason="node or three (npm workspace) not installed")
+def test_threejs_bvhloader_reads_our_file_to_the_same_joints(real_clips, tmp_path):
+    joints = real_clips["jump"][:40]
+    (tmp_path / "a.bvh").write_text(write_bvh(joints))
+    (tmp_path / "check.mjs").write_text(NODE_CHECK)
+    run = subprocess.run(["node", str(tmp_path / "check.mjs"), str(THREE), str(tmp_path / "a.bvh"),
+                          str(len(joints)), "0.05"], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stderr
+    out = json.loads(run.stdout)
+    got = np.stack([np.array(out[n]) for n in sk.JOINT_NAMES], axis=1)
+    assert np.abs(got - joints).max() < 1e-3

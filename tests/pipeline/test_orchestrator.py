@@ -1,0 +1,123 @@
+"""Algorithm 1 in the orchestrator: segments streamed and reviewed in order, review
+instructions run through SPAM's edits (the committed placeholder graphs, so edits really run)
+or retrieval re-draws, corrected frames re-sent with their start, plan trajectories moving the
+later segments along, cancellation and stage errors."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from tests.helpers.spam_stub import StubEncoder
+from tests.helpers.synthetic_motion import stand_in_clips
+
+from interplay.generators.retrieval.generator import RetrievalGenerator
+from interplay.generators.base import Request
+from interplay.pipeline.orchestrator import (
+    Cancelled,
+    OrchestratorConfig,
+    StageError,
+    _realign,
+    orchestrate,
+)
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.spam.runtime import DEFAULT_DIR
+from interplay.generators.router import with_spam
+from interplay.motion.kinematics import facing_angle
+
+
+@pytest.fixture(scope="module")
+def index():
+    return RetrievalIndex(stand_in_clips(), StubEncoder())
+
+
+def _run(gen, req, **kw):
+    events, frames = [], []
+    out = orchestrate(gen, req, events.append, lambda s, c: frames.append((s, c)), **kw)
+    return out, events, frames
+
+
+def _replay(frames, total: int, persons: int) -> np.ndarray:
+    arr = np.full((persons, total, 22, 3), np.nan)
+    for s, chunk in frames:
+        for p, c in enumerate(chunk):
+            arr[p, s:s + len(c)] = c
+    return arr
+
+
+def test_spam_review_runs_part_edits_and_resends_what_it_keeps(index):
+    gen = with_spam(index, DEFAULT_DIR, allow_untrained=True)
+    req = Request("a person walks while raising the left arm above the head", 1, 4.0, seed=2)
+    out, events, frames = _run(gen, req)
+    assert events[0]["type"] == "plan" and events[0]["plan"]["generator"] == "spam"
+    corrections = [e for e in events if e["type"] == "correction"]
+    reviews = [e for e in events if e["type"] == "review"]
+    assert reviews and reviews[0]["round"] == 0
+    asked = [i["kind"] for i in reviews[0]["instructions"]]
+    if asked:   # the untrained model rarely does what the plan says: its edits must run
+        assert corrections and all(c["score_after"] is not None for c in corrections[:1])
+    accepted = [c for c in corrections if c["accepted"]]
+    for c in accepted:
+        assert c["score_after"] >= c["score_before"]
+    # What was streamed last per frame is what the orchestrator returns.
+    streamed = _replay(frames, out.people[0].shape[0], 1)
+    assert np.allclose(streamed[0], out.people[0], atol=1e-4)
+    starts = [s for s, _ in frames]
+    assert (len(starts) != len(set(starts))) == bool(accepted)
+
+
+def test_retrieval_regenerate_redraws_and_keeps_the_stream_consistent(index):
+    gen = RetrievalGenerator(index)
+    req = Request("a person walks forward, then lies down on the floor", 1, 6.0, seed=5)
+    out, events, frames = _run(gen, req)
+    segs = [e for e in events if e["type"] == "segment"]
+    assert [(e["index"], e["status"]) for e in segs][:2] == [(0, "generating"), (0, "done")]
+    streamed = _replay(frames, 120, 1)
+    assert not np.isnan(streamed).any()
+    assert np.allclose(streamed[0], out.people[0], atol=1e-4)
+    for c in (e for e in events if e["type"] == "correction"):
+        kind = c["instruction"]["kind"]
+        if kind == "inbetween":
+            assert c["score_after"] is None and "SPAM" in c["reason"]
+        else:
+            assert c["score_after"] is not None    # a re-draw ran
+
+
+def test_no_review_means_no_review_events(index):
+    out, events, _ = _run(RetrievalGenerator(index), Request("a person walks", 1, 3.0, seed=1),
+                          cfg=OrchestratorConfig(review=False))
+    assert not [e for e in events if e["type"] in ("review", "correction")]
+    assert out.review["segments"] == []
+
+
+def test_realign_continues_later_frames_from_the_moved_end():
+    rng = np.random.default_rng(0)
+    old = rng.normal(size=(30, 22, 3)) * 0.1
+    old[:, :, 1] += 1.0
+    new = old.copy()
+    yaw = np.pi / 3
+    c, s = np.cos(yaw), np.sin(yaw)
+    rot = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+    new[:10] = old[:10] @ rot.T + [2.0, 0.0, -1.0]
+    moved = _realign(new, old, 10)
+    # Frame 10 relates to frame 9 as before: same step, turned with the end.
+    step_old = old[10, 0] - old[9, 0]
+    step_new = moved[10, 0] - moved[9, 0]
+    assert np.allclose(np.linalg.norm(step_old[[0, 2]]), np.linalg.norm(step_new[[0, 2]]))
+    assert np.isclose(facing_angle(moved[20]) - facing_angle(old[20]),
+                      facing_angle(new[9]) - facing_angle(old[9]))
+    assert np.allclose(moved[:10], new[:10]) and np.allclose(moved[10:, :, 1], old[10:, :, 1])
+
+
+def test_cancel_and_stage_errors(index):
+    gen = RetrievalGenerator(index)
+    with pytest.raises(Cancelled):
+        _run(gen, Request("a person walks", 1, 3.0, seed=1), cancelled=lambda: True)
+
+    class Broken(RetrievalGenerator):
+        def stream(self, req, plan):
+            raise RuntimeError("no frames today")
+            yield
+
+    with pytest.raises(StageError) as exc:
+        _run(Broken(index), Request("a person walks", 1, 3.0, seed=1))
+    assert exc.value.stage == "generate" and "no frames today" in exc.value.reason
