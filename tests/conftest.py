@@ -1,7 +1,7 @@
 import pytest
-from tests.helpers.synthetic_motion import stand_in_clips
 
 from interplay.motion.clip import save_clips
+from tests.helpers.synthetic_motion import stand_in_clips
 
 
 @pytest.fixture(scope="session")

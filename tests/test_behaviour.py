@@ -6,6 +6,7 @@ which the code before the move made (tests/fixtures/make_behaviour.py)."""
 from __future__ import annotations
 
 import json
+
 import pytest
 
 from tests.fixtures import make_behaviour

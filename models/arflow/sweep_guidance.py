@@ -12,8 +12,8 @@ import json
 import sys
 from dataclasses import replace
 
-from interplay.reaction.session import get_reaction_model
 from interplay.eval.reaction import run_eval_react
+from interplay.reaction.session import get_reaction_model
 
 # (guidance w, safe distance δ, rigid r, gradient steps per flow step)
 GRID = [(0.3, 0.06, 0.3, 3), (0.3, 0.06, 0.3, 2), (0.3, 0.06, 0.3, 1), (0.5, 0.06, 0.3, 3),

@@ -12,8 +12,8 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from interplay.motion.pair import interaction as ia
 from interplay.motion.metrics import DEFAULT, pair_geometry
+from interplay.motion.pair import interaction as ia
 
 from .cvq import CVQVAE
 from .data import PairTensors

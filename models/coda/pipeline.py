@@ -105,7 +105,7 @@ def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), early: bool = Fals
     sets["val_as_is"] = sets["val"].take(_as_is(sets["val"]))
     joints = Joints(mean, std)
     times["data"] = time.perf_counter() - start
-    log(f"[data] " + ", ".join(f"{k} {len(v)}" for k, v in sets.items()))
+    log("[data] " + ", ".join(f"{k} {len(v)}" for k, v in sets.items()))
     real = {s: pair_numbers(to_joints(sets[s].a, mean, std), to_joints(sets[s].b, mean, std))
             for s in ("test_as_is", "val_as_is")}
     results = {"coda": train_variant("coda", replace(VQ_TRAIN, seconds=b.vq), b.cmt, sets,

@@ -17,11 +17,11 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from interplay.review.evaluator import Evaluator as Runtime
 from interplay.eval.metrics import confidence, r_precision
 from interplay.eval.testset import split_samples
 from interplay.motion.clip import DATA_DIR, default_clips
 from interplay.motion.features import Normalizer
+from interplay.review.evaluator import Evaluator as Runtime
 
 from .config import EvaluatorConfig
 from .model import Evaluator

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interplay.review.pair_evaluator import PAIR_FEATURE_DIM, pair_features
 from interplay.motion import skeleton as sk
 from interplay.motion.pair.windows import pair_windows
+from interplay.review.pair_evaluator import PAIR_FEATURE_DIM, pair_features
 
 
 def kind_of(clip) -> str:

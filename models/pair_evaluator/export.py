@@ -18,8 +18,8 @@ import numpy as np
 import torch
 
 from interplay.eval.metrics import fid
-from interplay.review.pair_evaluator import PairEvaluator
 from interplay.motion.clip import default_clips
+from interplay.review.pair_evaluator import PairEvaluator
 from models.evaluator.export import export_cli, export_onnx, save_text_proj
 from models.evaluator.model import Evaluator
 

@@ -17,8 +17,9 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-import models.spam  # noqa: F401  (OpenMP wait policy before torch loads)
 import torch
+
+import models.spam  # noqa: F401  (OpenMP wait policy before torch loads)
 
 from . import checkpoint
 from .config import FEATURE_DIM, PARTS, TEXT_DIM
@@ -67,7 +68,8 @@ def bench_onnx(weights: Path, inputs_of: dict, runs: int, warmup: int, threads: 
                 continue
             sess = ort.InferenceSession(str(path), opts, providers=["CPUExecutionProvider"])
             feed = dict(zip(inputs[name], (a.numpy() for a in args)))
-            out[precision][name] = _median_ms(lambda: sess.run(None, feed), (), runs, warmup)
+            out[precision][name] = _median_ms(lambda sess=sess, feed=feed: sess.run(None, feed), (),
+                                              runs, warmup)
     return out
 
 

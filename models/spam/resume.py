@@ -48,7 +48,8 @@ def log_histories(text: str) -> dict[str, History]:
 
 
 def resume(log_path: Path, weights_dir: Path = WEIGHTS, cache_dir: Path = CACHE_DIR,
-           budgets: Budgets = Budgets(), log=print) -> dict:
+           budgets: Budgets | None = None, log=print) -> dict:
+    budgets = budgets or Budgets()
     histories = log_histories(Path(log_path).read_text())
     missing = [f"{n}/{s}" for n, stages in VARIANTS.items() for s in ("vq", *stages)
                if f"{n}/{s}" not in histories or not (cache_dir / n / f"{s}.pt").is_file()]

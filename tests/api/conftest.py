@@ -8,7 +8,6 @@ import pytest
 from fastapi.testclient import TestClient
 
 from interplay.api.app import create_app
-from interplay.motion.skeleton import FPS, rest_joints
 from interplay.settings import Settings
 from tests.helpers.api import FakeGenerator
 

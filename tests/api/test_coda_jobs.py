@@ -6,9 +6,9 @@ from __future__ import annotations
 import pytest
 from fastapi.testclient import TestClient
 
+from interplay.api.app import create_app
 from interplay.generators.coda.files import DEFAULT_DIR, FILES
 from interplay.generators.weights import placeholder_reason
-from interplay.api.app import create_app
 
 HAVE_CODA = all((DEFAULT_DIR / f).is_file() for f in FILES) and placeholder_reason(DEFAULT_DIR, "CODA") is None
 

@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.spam.runtime import DEFAULT_DIR
-from interplay.generators.router import with_spam
 from interplay.api.app import create_app
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.router import with_spam
+from interplay.generators.spam.runtime import DEFAULT_DIR
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import default_clips
 from interplay.text.encoder import get_encoder

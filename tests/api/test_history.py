@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 from sqlalchemy import create_engine, text
 
-from tests.helpers.api import run_job
 from interplay.store import MotionRepository, make_engine
+from tests.helpers.api import run_job
 
 
 def _generated(client, persons: int = 1) -> str:

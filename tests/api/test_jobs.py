@@ -8,12 +8,12 @@ import time
 
 import numpy as np
 import pytest
-from tests.helpers.api import FakeGenerator, run_job
 from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 
 from interplay.api import app as app_module
 from interplay.api.app import create_app
+from tests.helpers.api import FakeGenerator, run_job
 
 BAD_JOBS = [
     ({"prompt": "", "persons": 1, "seconds": 3}, "prompt"),

@@ -8,12 +8,12 @@ import re
 
 import numpy as np
 import pytest
-from tests.helpers.api import FakeGenerator, run_job
 from fastapi.testclient import TestClient
 
 from interplay.api.app import create_app
 from interplay.motion import skeleton as sk
 from interplay.motion.motion import Motion
+from tests.helpers.api import FakeGenerator, run_job
 
 MISSING = "AAAAAAAAAAAAAAAAAAAAAA"            # well-formed, never handed out
 MALFORMED = ["x", "not-an-id!", "%2E%2E%2Fetc", "a" * 300]

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from tests.helpers.api import FakeGenerator, run_job
 from interplay.api.app import create_app
+from tests.helpers.api import FakeGenerator, run_job
 
 PARTS = {"body", "left_upper", "right_upper", "left_lower", "right_lower"}
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from tests.helpers.api import run_job
 
-from interplay.reaction.session import WEIGHTS_DIR
 from interplay.motion.skeleton import bone_lengths
+from interplay.reaction.session import WEIGHTS_DIR
+from tests.helpers.api import run_job
 
 needs_weights = pytest.mark.skipif(not (WEIGHTS_DIR / "arflow.onnx").exists(),
                                    reason="no ARFlow weights")

@@ -3,8 +3,8 @@ committed graphs, and the table; a missing weights dir is reported, not raised."
 
 from __future__ import annotations
 
-from interplay.generators.spam.runtime import DEFAULT_DIR
 from interplay.bench.model import format_model_table, run_model_bench
+from interplay.generators.spam.runtime import DEFAULT_DIR
 
 
 def test_model_bench_times_generation_and_an_edit(tmp_path):

@@ -3,8 +3,8 @@
 import json
 
 from interplay.cli import main as cli
-from interplay.planner.schema import validate_plan
 from interplay.planner.plan import plan_json
+from interplay.planner.schema import validate_plan
 
 PROMPT = "two people shake hands, then one walks away in a circle"
 

@@ -7,10 +7,10 @@ import json
 import numpy as np
 import pytest
 
-from interplay.reaction.session import WEIGHTS_DIR
 from interplay.cli.main import main
 from interplay.motion.clip import default_clips
 from interplay.motion.metrics import clip_metrics
+from interplay.reaction.session import WEIGHTS_DIR
 
 pytestmark = pytest.mark.skipif(not (WEIGHTS_DIR / "arflow.onnx").exists(),
                                 reason="no ARFlow weights")

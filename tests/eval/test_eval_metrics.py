@@ -83,9 +83,9 @@ def test_confidence_interval():
 
 @pytest.fixture(scope="module")
 def test_embeddings():
-    from interplay.review.evaluator import load_evaluator
     from interplay.eval.testset import split_samples
     from interplay.motion.clip import default_clips
+    from interplay.review.evaluator import load_evaluator
     ev = load_evaluator()
     samples = split_samples(default_clips(), "test")
     texts = [s.text for s in samples]

@@ -36,7 +36,7 @@ def test_eval_pair_on_a_tiny_subset(tmp_path):
 def test_contact_windows_cover_the_composed_touches():
     clips = default_clips()
     windows = contact_windows(clips)
-    for kind, info in windows.items():
+    for _kind, info in windows.items():
         lo, hi = info["window"]
         for cid in info["clips"]:
             c = next(x for x in clips if x.id == cid)
@@ -64,9 +64,9 @@ def test_cli_eval_pair(capsys):
 
 
 def test_coda_rows_raw_and_product_see_the_same_samples():
-    from interplay.generators.coda.files import DEFAULT_DIR, FILES
     from interplay.eval.pair import load_row
     from interplay.eval.pair_report import touches
+    from interplay.generators.coda.files import DEFAULT_DIR, FILES
     if not all((DEFAULT_DIR / f).is_file() for f in FILES):
         import pytest
         pytest.skip("no CODA weights committed yet")

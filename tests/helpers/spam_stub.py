@@ -12,8 +12,8 @@ import zlib
 
 import numpy as np
 
-from interplay.generators.spam.runtime import SpamRuntime
 from interplay.generators.spam.files import SpamConfig
+from interplay.generators.spam.runtime import SpamRuntime
 from interplay.motion import skeleton as sk
 from interplay.motion.features import FEATURE_DIM, Normalizer, part_feature_mask
 

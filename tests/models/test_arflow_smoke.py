@@ -11,12 +11,12 @@ import pytest
 
 torch = pytest.importorskip("torch")
 
+from interplay.motion.skeleton import PARENTS  # noqa: E402
 from models.arflow.config import ARFlowConfig, TrainConfig  # noqa: E402
 from models.arflow.data import PairSet, fit_stats, pair_set  # noqa: E402
 from models.arflow.export import check, check_step, export, load  # noqa: E402
 from models.arflow.model import ARFlow  # noqa: E402
 from models.arflow.train import evaluate, tensors, train  # noqa: E402
-from interplay.motion.skeleton import PARENTS  # noqa: E402
 
 
 class ConstEncoder:

@@ -9,8 +9,8 @@ import pytest
 
 torch = pytest.importorskip("torch")
 
-from interplay.motion.pair import interaction as ia  # noqa: E402
 from interplay.motion.clip import default_clips  # noqa: E402
+from interplay.motion.pair import interaction as ia  # noqa: E402
 from interplay.motion.pair.windows import pair_windows  # noqa: E402
 from models.coda import ccl  # noqa: E402
 

@@ -18,8 +18,7 @@ from models.coda.config import CMTConfig, CVQConfig, LossConfig, TrainConfig  # 
 from models.coda.data import tensors  # noqa: E402
 from models.coda.export import export_all  # noqa: E402
 from models.coda.sample import sample_codes  # noqa: E402
-from models.coda.train import (Joints, cvq_loss, encode_pairs, evaluate_cmt,  # noqa: E402
-                               train_cmt, train_cvq)
+from models.coda.train import Joints, cvq_loss, encode_pairs, evaluate_cmt, train_cmt, train_cvq  # noqa: E402
 
 TINY = CVQConfig(codes=32, interaction_codes=16, latent=32, width=32, depth=1, heads=2)
 TINY_CMT = CMTConfig(codes=32, d=32, heads=2, blocks=1, ff=2, dropout=0.0, max_tokens=8)

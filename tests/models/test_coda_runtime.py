@@ -13,16 +13,15 @@ import pytest
 
 pytest.importorskip("torch")
 
-from tests.helpers.coda_tiny import export_tiny  # noqa: E402
-
-from interplay.generators.coda import runtime as coda_mod  # noqa: E402
-from interplay.generators.coda.runtime import CodaRuntime  # noqa: E402
-from interplay.generators.coda.generator import CodaGenerator  # noqa: E402
-from interplay.generators.router import load_coda  # noqa: E402
 from interplay.generators.base import Request  # noqa: E402
+from interplay.generators.coda import runtime as coda_mod  # noqa: E402
+from interplay.generators.coda.generator import CodaGenerator  # noqa: E402
+from interplay.generators.coda.runtime import CodaRuntime  # noqa: E402
+from interplay.generators.router import load_coda  # noqa: E402
 from interplay.motion import skeleton as sk  # noqa: E402
 from interplay.motion.kinematics import facing_angle  # noqa: E402
 from interplay.motion.metrics import bone_deviation  # noqa: E402
+from tests.helpers.coda_tiny import export_tiny  # noqa: E402
 
 
 class HashEncoder:

@@ -7,8 +7,8 @@ import pytest
 
 torch = pytest.importorskip("torch")
 
-from interplay.review.pair_evaluator import PairEvaluator  # noqa: E402
 from interplay.motion.clip import default_clips  # noqa: E402
+from interplay.review.pair_evaluator import PairEvaluator  # noqa: E402
 from models.evaluator.export import onnx_matches_torch  # noqa: E402
 from models.pair_evaluator.config import PairEvaluatorConfig  # noqa: E402
 from models.pair_evaluator.export import export, load_checkpoint  # noqa: E402

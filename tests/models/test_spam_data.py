@@ -12,10 +12,17 @@ from interplay.motion import skeleton as sk  # noqa: E402
 from interplay.motion.clip import Caption, default_clips  # noqa: E402
 from interplay.motion.features import SLICES, decode, encode  # noqa: E402
 from interplay.motion.metrics import centre_of_mass  # noqa: E402
-
 from models.spam.config import LossConfig  # noqa: E402
-from models.spam.data import (Track, build_tracks, fit_normalizer, mirror_joints,  # noqa: E402
-                              mirror_text, part_texts, person_captions, person_prompt)
+from models.spam.data import (  # noqa: E402
+    Track,
+    build_tracks,
+    fit_normalizer,
+    mirror_joints,
+    mirror_text,
+    part_texts,
+    person_captions,
+    person_prompt,
+)
 from models.spam.losses import COM_WEIGHTS, MotionLoss, fk_joints  # noqa: E402
 
 

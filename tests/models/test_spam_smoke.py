@@ -14,15 +14,12 @@ pytest.importorskip("onnx")
 ort = pytest.importorskip("onnxruntime")
 
 from interplay.motion.clip import default_clips  # noqa: E402
-
 from models.spam import checkpoint  # noqa: E402
-from models.spam.config import (LossConfig, TrainConfig, TransformerConfig,  # noqa: E402
-                                VQConfig)
-from models.spam.data import TextBank, fit_normalizer, load_tracks  # noqa: E402
 from models.spam.bench_torch import bench, bench_onnx, graph_inputs  # noqa: E402
+from models.spam.config import LossConfig, TrainConfig, TransformerConfig, VQConfig  # noqa: E402
+from models.spam.data import TextBank, fit_normalizer, load_tracks  # noqa: E402
 from models.spam.export import example_inputs, export_all  # noqa: E402
-from models.spam.train import (TokenBatches, encode_tracks, mask_tokens,  # noqa: E402
-                               train_transformer, train_vq)
+from models.spam.train import TokenBatches, encode_tracks, mask_tokens, train_transformer, train_vq  # noqa: E402
 from models.spam.transformer import SPAMTransformer  # noqa: E402
 from models.spam.vqvae import RVQVAE  # noqa: E402
 

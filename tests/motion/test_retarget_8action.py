@@ -10,8 +10,14 @@ import pytest
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.retarget.cmu_8action import (
-    FPS_8ACTION, PROMPTS, ExpMapSkeleton, cmu_8action_prompt, forward_kinematics, load_cmu_8action,
-    read_frames)
+    FPS_8ACTION,
+    PROMPTS,
+    ExpMapSkeleton,
+    cmu_8action_prompt,
+    forward_kinematics,
+    load_cmu_8action,
+    read_frames,
+)
 
 RAW = Path(__file__).resolve().parents[1] / "fixtures" / "raw" / "cmu-8action"
 WALK = RAW / "train" / "walking" / "walking_4.txt"

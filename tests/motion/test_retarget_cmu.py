@@ -8,10 +8,23 @@ from interplay.motion.formats.bvh import read_bvh
 from interplay.motion.kinematics import facing_direction
 from interplay.motion.retarget import map_joints
 from interplay.motion.retarget.cmu_daz import (
-    CENTIMETRE, DAZ_MAP, SALSA_SCALED_UNIT, file_unit, load_cmu_bvh, load_salsa_pair,
-    read_cmu_index, rest_height, skeleton_family)
+    CENTIMETRE,
+    DAZ_MAP,
+    SALSA_SCALED_UNIT,
+    file_unit,
+    load_cmu_bvh,
+    load_salsa_pair,
+    read_cmu_index,
+    rest_height,
+    skeleton_family,
+)
 from interplay.motion.retarget.frame_rate import (
-    MAX_COM_ACCELERATION, SALSA_FPS, estimate_true_fps, gait_stats, lead_in_frames)
+    MAX_COM_ACCELERATION,
+    SALSA_FPS,
+    estimate_true_fps,
+    gait_stats,
+    lead_in_frames,
+)
 
 RAW = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "raw"
 BVH = RAW / "cmu-bvh"

@@ -7,11 +7,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from tests.helpers.spam_stub import StubEncoder
-from tests.helpers.synthetic_motion import stand_in_clips
 
-from interplay.generators.retrieval.generator import RetrievalGenerator
 from interplay.generators.base import Request
+from interplay.generators.retrieval.generator import RetrievalGenerator
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.router import with_spam
+from interplay.generators.spam.runtime import DEFAULT_DIR
+from interplay.motion.kinematics import facing_angle
 from interplay.pipeline.orchestrator import (
     Cancelled,
     OrchestratorConfig,
@@ -19,10 +21,8 @@ from interplay.pipeline.orchestrator import (
     _realign,
     orchestrate,
 )
-from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.spam.runtime import DEFAULT_DIR
-from interplay.generators.router import with_spam
-from interplay.motion.kinematics import facing_angle
+from tests.helpers.spam_stub import StubEncoder
+from tests.helpers.synthetic_motion import stand_in_clips
 
 
 @pytest.fixture(scope="module")

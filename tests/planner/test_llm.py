@@ -10,8 +10,8 @@ import httpx
 import pytest
 
 from interplay.planner.llm import extract_json, llm_plan
-from interplay.planner.schema import validate_plan
 from interplay.planner.plan import embedded_plan, plan
+from interplay.planner.schema import validate_plan
 from interplay.settings import Settings
 
 PROMPT = "a person does the wakanda salute, then jumps"

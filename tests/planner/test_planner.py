@@ -5,17 +5,16 @@ set in the repo (models/data) with the MiniLM encoder."""
 
 import json
 import re
-from pathlib import Path
 
 import pytest
 
+from interplay.eval.data import TABLE8 as TABLE8_FILE
 from interplay.planner import lexicon
-from interplay.planner.schema import validate_plan
 from interplay.planner.plan import embedded_plan, plan
+from interplay.planner.schema import validate_plan
 from interplay.planner.verbs import lookup
 from interplay.planner.vocabulary import load_vocabulary
 from interplay.settings import Settings
-from interplay.eval.data import TABLE8 as TABLE8_FILE
 
 TABLE8 = json.loads(TABLE8_FILE.read_text())["prompts"]
 # The paper: short = one segment, medium = two, long = more than two. The brief allows short ±1.

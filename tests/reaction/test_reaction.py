@@ -7,7 +7,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from interplay.motion import skeleton as sk
+from interplay.motion.clip import default_clips
+from interplay.motion.metrics import clip_metrics
+from interplay.motion.pair.windows import pair_windows
 from interplay.reaction.penetration import guide, penetration_loss, radii, sphere_centres
+from interplay.reaction.react import react
 from interplay.reaction.session import (
     WEIGHTS_DIR,
     ReactionSession,
@@ -15,11 +20,6 @@ from interplay.reaction.session import (
     get_reaction_model,
     sample_windows,
 )
-from interplay.reaction.react import react
-from interplay.motion import skeleton as sk
-from interplay.motion.clip import default_clips
-from interplay.motion.metrics import clip_metrics
-from interplay.motion.pair.windows import pair_windows
 
 pytestmark = pytest.mark.skipif(not (WEIGHTS_DIR / "arflow.onnx").exists(),
                                 reason="no ARFlow weights")
@@ -133,8 +133,8 @@ def test_bad_input(model):
 
 
 def test_cached_session_matches_the_full_graph(model, windows):
-    from interplay.reaction.session import window_frame
     from interplay.reaction.cached import CachedReactionSession
+    from interplay.reaction.session import window_frame
     if model.step_session is None:
         pytest.skip("weights without arflow_step.onnx")
     actor = np.concatenate([windows[0, 0], windows[1, 0]])[:model.window + 8]

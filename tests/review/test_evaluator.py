@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from interplay.review.evaluator import Evaluator, chunks, load_evaluator
 from interplay.motion.clip import default_clips
+from interplay.review.evaluator import Evaluator, chunks, load_evaluator
 
 
 @pytest.fixture(scope="module")

@@ -7,16 +7,16 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from interplay.eval.metrics import fid
+from interplay.motion.clip import default_clips
+from interplay.motion.pair.windows import pair_windows
+from interplay.motion.rotations import yaw_matrix
 from interplay.review.pair_evaluator import (
     DEFAULT_DIR,
     PairEvaluator,
     check_windows,
     load_pair_evaluator,
 )
-from interplay.eval.metrics import fid
-from interplay.motion.clip import default_clips
-from interplay.motion.pair.windows import pair_windows
-from interplay.motion.rotations import yaw_matrix
 
 pytestmark = pytest.mark.skipif(not (DEFAULT_DIR / "motion_encoder.onnx").exists(),
                                 reason="no pair evaluator weights")

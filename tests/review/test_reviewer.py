@@ -6,10 +6,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from interplay.motion.clip import default_clips
 from interplay.planner.plan import plan_json
 from interplay.review.checks import commonsense
 from interplay.review.reviewer import CannotApply, correct, review
-from interplay.motion.clip import default_clips
 
 
 @pytest.fixture(scope="module")

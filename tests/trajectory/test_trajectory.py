@@ -6,9 +6,6 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from interplay.trajectory import bspline
-from interplay.trajectory import curves as cv
-from interplay.trajectory import apply as tj
 from interplay.eval.trajectory import (
     EXAMPLE_SPECS,
     heading_error,
@@ -20,6 +17,9 @@ from interplay.eval.trajectory import (
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import default_clips
 from interplay.motion.kinematics import facing_angle
+from interplay.trajectory import apply as tj
+from interplay.trajectory import bspline
+from interplay.trajectory import curves as cv
 
 LEG_JOINTS = {sk.JOINT_INDEX[f"{side}_{j}"] for side in ("left", "right")
               for j in ("knee", "ankle", "foot")}

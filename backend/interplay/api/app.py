@@ -16,12 +16,12 @@ from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from interplay import __version__
-from interplay.settings import Settings, get_settings
-from interplay.store import MotionRepository, make_engine
 from interplay.api import stream
 from interplay.api.jobs import JobManager
-from interplay.pipeline.requests import readable_errors
 from interplay.api.routes import edits, jobs, motions, pages
+from interplay.pipeline.requests import readable_errors
+from interplay.settings import Settings, get_settings
+from interplay.store import MotionRepository, make_engine
 
 log = logging.getLogger(__name__)
 

@@ -7,9 +7,9 @@ from typing import Annotated
 
 from fastapi import Depends, HTTPException, Request
 
+from interplay.api.jobs import JobManager
 from interplay.settings import Settings
 from interplay.store import MotionRepository
-from interplay.api.jobs import JobManager
 
 
 def app_settings(request: Request) -> Settings:

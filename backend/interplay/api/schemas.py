@@ -7,15 +7,12 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from interplay.pipeline.requests import (
-    MAX_COORD,
-    MAX_POINTS,
     MAX_PROMPT,
-    MAX_SECONDS,
     MAX_SEED,
-    MIN_SECONDS,
     GenerationRequest,
     TrajectoryIn,
 )
+
 
 class JobCreate(GenerationRequest):
     model_config = ConfigDict(json_schema_extra={

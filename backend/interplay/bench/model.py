@@ -61,7 +61,7 @@ def run_model_bench(weights_dir: str | Path | None = None, runs: int = 10, warmu
               "generate": [], "targets_ms": TARGETS_MS}
     for s in seconds:
         frames = round(s * 20)
-        times = _timed(lambda i: rt.generate(PROMPTS[i % len(PROMPTS)], frames, seed=i),
+        times = _timed(lambda i, frames=frames: rt.generate(PROMPTS[i % len(PROMPTS)], frames, seed=i),
                        runs, warmup)
         report["generate"].append({"seconds": s, **_row(times, frames)})
     motion = rt.generate(PROMPTS[0], 120, seed=0)

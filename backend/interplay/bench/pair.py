@@ -20,8 +20,8 @@ TARGET_MS = {"generate_6s_p50": 400.0}
 def run_pair_bench(weights_dir: str | Path | None = None, runs: int = 10, warmup: int = 2,
                    seconds: tuple[float, ...] = (2.0, 6.0, 10.0), runtime=None) -> dict:
     """{"weights", "trained", "generate": [rows], "target_ms"} or {"error": why}."""
-    from interplay.generators.coda.runtime import CodaRuntime
     from interplay.generators.coda.files import DEFAULT_DIR
+    from interplay.generators.coda.runtime import CodaRuntime
     from interplay.generators.weights import placeholder_reason
     weights_dir = Path(weights_dir or DEFAULT_DIR)
     t0 = time.perf_counter()
@@ -37,7 +37,7 @@ def run_pair_bench(weights_dir: str | Path | None = None, runs: int = 10, warmup
               "target_ms": TARGET_MS}
     for s in seconds:
         frames = round(s * 20)
-        times = _timed(lambda i: rt.generate(PROMPTS[i % len(PROMPTS)], s, seed=i), runs, warmup)
+        times = _timed(lambda i, s=s: rt.generate(PROMPTS[i % len(PROMPTS)], s, seed=i), runs, warmup)
         report["generate"].append({"seconds": s, **_row(times, frames)})
     from interplay.generators.coda.finish import finish_pair
 

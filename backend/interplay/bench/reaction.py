@@ -17,8 +17,8 @@ TARGET_MS = 5.0
 
 
 def run_reaction_bench(frames: int = 200, warmup: int = 20) -> dict:
-    from interplay.reaction.session import get_reaction_model
     from interplay.motion.clip import default_clips
+    from interplay.reaction.session import get_reaction_model
     try:
         model = get_reaction_model()
     except Exception as exc:

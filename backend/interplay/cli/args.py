@@ -8,7 +8,6 @@ import json
 from pathlib import Path
 
 
-
 class CliError(Exception):
     """A user error: printed as `interplay: error: …`, exit code 2."""
 

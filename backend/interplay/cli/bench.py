@@ -7,7 +7,6 @@ import json
 from interplay.cli.args import CliError, seconds
 
 
-
 def cmd_bench(args) -> int:
     from interplay.bench.api import format_table, run_bench
     if args.runs < 1:

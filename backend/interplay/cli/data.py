@@ -7,7 +7,6 @@ import argparse
 from interplay.cli.args import CliError
 
 
-
 def cmd_data(args) -> int:
     if args.action != "build":
         raise CliError(f"unknown data action {args.action!r}; expected 'build'")

@@ -8,7 +8,6 @@ import sys
 from interplay.cli.args import CliError
 
 
-
 def _sampling_args(items: list[str] | None) -> list[tuple[str, object]]:
     """["cfg=2.5", "mode=inpaint"] → [("cfg", 2.5), ("mode", "inpaint")] (numbers parsed)."""
     out = []
@@ -46,8 +45,8 @@ def cmd_eval(args) -> int:
 def cmd_eval_react(args) -> int:
     from dataclasses import replace as _replace
 
-    from interplay.reaction.session import get_reaction_model
     from interplay.eval.reaction import ROWS, format_table, run_eval_react
+    from interplay.reaction.session import get_reaction_model
     try:
         rows = tuple(args.rows.split(",")) if args.rows else ROWS
         if any(r not in ROWS for r in rows):
@@ -72,8 +71,8 @@ def cmd_eval_react(args) -> int:
 
 def cmd_review_eval(args) -> int:
     """The reviewer before/after its correction rounds on CoMA's 40 Table 8 prompts."""
-    from interplay.generators.router import load_generator
     from interplay.eval.review import format_table, run, table8_prompts
+    from interplay.generators.router import load_generator
     from interplay.settings import get_settings
     if args.limit is not None and args.limit < 1:
         raise CliError("--limit must be at least 1")

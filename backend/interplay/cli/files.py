@@ -8,10 +8,9 @@ import sys
 from interplay.cli.args import CliError, read_motion, write_text
 
 
-
 def cmd_metrics(args) -> int:
-    from interplay.pipeline.motion_json import plain
     from interplay.motion.metrics import clip_metrics
+    from interplay.pipeline.motion_json import plain
     motion = read_motion(args.motion)
     metrics = plain(clip_metrics([p.astype("float64") for p in motion.people]))
     if args.json:

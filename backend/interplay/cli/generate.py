@@ -10,15 +10,14 @@ from pathlib import Path
 from interplay.cli.args import CliError, frame_range, read_motion, seconds, write_text
 
 
-
 def cmd_generate(args) -> int:
     from pydantic import ValidationError
 
-    from interplay.generators.router import load_generator
     from interplay.generators.base import Request, random_seed
+    from interplay.generators.router import load_generator
+    from interplay.motion.metrics import clip_metrics
     from interplay.pipeline.motion_json import plain
     from interplay.pipeline.requests import GenerationRequest, readable_errors
-    from interplay.motion.metrics import clip_metrics
     from interplay.settings import get_settings
     try:
         body = GenerationRequest(prompt=args.prompt, persons=args.persons, seconds=args.seconds,
@@ -46,8 +45,8 @@ def _trajectory_arg(value: str, person: int) -> dict:
     API validates it."""
     from pydantic import ValidationError
 
-    from interplay.planner.schema import readable
     from interplay.pipeline.requests import TrajectoryIn
+    from interplay.planner.schema import readable
     path = Path(value)
     if value.endswith(".json") or path.is_file():
         try:
@@ -66,13 +65,13 @@ def _trajectory_arg(value: str, person: int) -> dict:
 
 
 def cmd_edit(args) -> int:
-    from interplay.generators.router import load_generator
     from interplay.generators.base import EditUnavailable
+    from interplay.generators.router import load_generator
     from interplay.generators.spam.generator import resolve_edit_part
-    from interplay.pipeline.editing import edit_joints, follow_path
-    from interplay.pipeline.motion_json import plain
     from interplay.motion.metrics import clip_metrics
     from interplay.motion.motion import Motion
+    from interplay.pipeline.editing import edit_joints, follow_path
+    from interplay.pipeline.motion_json import plain
     from interplay.settings import get_settings
     motion = read_motion(args.motion)
     if args.prompt is None and args.trajectory is None:

@@ -3,15 +3,14 @@
 from __future__ import annotations
 
 import json
+import sys
 
 import numpy as np
 
+from interplay.cli.args import CliError, read_motion, write_text
 from interplay.motion.metrics import clip_metrics
 from interplay.motion.motion import Motion
 from interplay.reaction.react import react
-import sys
-
-from interplay.cli.args import CliError, read_motion, write_text
 
 
 def react_file(actor_motion: Motion, prompt: str | None, seed: int,

@@ -5,7 +5,6 @@ from __future__ import annotations
 from interplay.cli.args import CliError  # noqa: F401  (the commands' shared error)
 
 
-
 def cmd_serve(args) -> int:
     import uvicorn
 

@@ -14,8 +14,8 @@ import sys
 import time
 from pathlib import Path
 
-from interplay.motion.clip import DATA_DIR, Caption, Clip, save_clips
 from interplay.data.card import write_card
+from interplay.motion.clip import DATA_DIR, Caption, Clip, save_clips
 from interplay.motion.labels import cmu_prompt, label_family
 
 REPO = Path(__file__).resolve().parents[3]

@@ -127,8 +127,8 @@ def fid_embedding(train: PairSet):
 
 # -- rows ------------------------------------------------------------------------------------
 def _retrieval(clips) -> Generate:
-    from interplay.generators.retrieval.generator import RetrievalGenerator
     from interplay.generators.base import Request
+    from interplay.generators.retrieval.generator import RetrievalGenerator
     from interplay.generators.retrieval.index import RetrievalIndex
     from interplay.text.encoder import get_encoder
     gen = RetrievalGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
@@ -141,9 +141,9 @@ def _retrieval(clips) -> Generate:
 
 
 def _coda(weights: Path, product: bool = False) -> Generate:
+    from interplay.generators.coda.finish import finish_pair
     from interplay.generators.coda.runtime import CodaRuntime
     from interplay.generators.weights import placeholder_reason
-    from interplay.generators.coda.finish import finish_pair
     if not (weights / "config.json").is_file():
         raise Skip(f"no weights in models/weights/{weights.name}")
     why = placeholder_reason(weights, "CODA")

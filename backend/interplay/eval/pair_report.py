@@ -111,8 +111,8 @@ def run_eval_pair(rows=ROW_NAMES, repeats: int = 3, seed: int = 0, limit: int | 
                   contact_seeds: int = 10, clips=None, weights=None, log=None) -> dict:
     """{"sets": {"captured"|"composed": {"windows", "rows": {row: {col: [mean, hw]}}}},
     "skipped": {row: why}, "fid_embedding", "contact": contact_check(...)}."""
-    from interplay.motion.clip import default_clips
     from interplay.eval.pair import WEIGHTS
+    from interplay.motion.clip import default_clips
     if repeats < 2:
         raise ValueError("--repeats must be at least 2 (for the intervals)")
     clips = list(clips or default_clips())

@@ -12,10 +12,9 @@ import json
 import time
 from pathlib import Path
 
+from interplay.eval.data import TABLE8
 from interplay.planner.decompose import POSTURE_BASE
 from interplay.planner.plan import embedded_plan
-from interplay.eval.data import TABLE8
-
 
 
 def _count_ok(label: str, n: int, tolerance: bool) -> bool:

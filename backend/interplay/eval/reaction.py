@@ -25,7 +25,7 @@ body) and foot skating (m/s of planted feet) are `motion.metrics.clip_metrics` o
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -33,13 +33,13 @@ from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import fit_to_skeleton
 from interplay.motion.metrics import clip_metrics, person_metrics
 from interplay.motion.pair.windows import distance_map, pair_windows, relative_root
-from interplay.review.pair_evaluator import PairEvaluator, load_pair_evaluator
 from interplay.reaction.session import (
     ReactionModel,
     SamplingConfig,
     get_reaction_model,
     sample_windows,
 )
+from interplay.review.pair_evaluator import PairEvaluator, load_pair_evaluator
 
 WINDOW, STRIDE, PCA_DIMS = 40, 20, 16
 ROWS = ("real", "no_guidance", "guidance", "guidance_reproject")

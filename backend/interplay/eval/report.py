@@ -19,11 +19,11 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from interplay.motion.metrics import clip_metrics
 from interplay.eval import metrics as M
 from interplay.eval.edits import CASES, VAL_CASES, edit_fidelity
 from interplay.eval.rows import ROW_NAMES, Row, Skip, load_row
 from interplay.eval.testset import split_samples
+from interplay.motion.metrics import clip_metrics
 
 PHYSICAL = ("bone_deviation", "foot_skating", "ground_penetration", "floating", "com_angle")
 TEXT_METRICS = ("top1", "top2", "top3", "fid", "mm_dist", "diversity", "multimodality")
@@ -114,8 +114,8 @@ def evaluate_row(row: Row, samples, real_emb: np.ndarray, text_emb: np.ndarray, 
 def run_eval(rows=ROW_NAMES, cfg: EvalConfig = EvalConfig(), clips=None, evaluator=None,
              log=print) -> dict:
     """The whole report as plain data (see format_table)."""
-    from interplay.review.evaluator import load_evaluator
     from interplay.motion.clip import default_clips
+    from interplay.review.evaluator import load_evaluator
     t0 = time.time()
     clips = clips if clips is not None else default_clips()
     evaluator = evaluator or load_evaluator()

@@ -63,8 +63,8 @@ def _trained(weights: Path) -> None:
 
 
 def _retrieval(clips) -> Row:
-    from interplay.generators.retrieval.generator import RetrievalGenerator
     from interplay.generators.base import Request
+    from interplay.generators.retrieval.generator import RetrievalGenerator
     from interplay.generators.retrieval.index import RetrievalIndex
     from interplay.text.encoder import get_encoder
     gen = RetrievalGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))

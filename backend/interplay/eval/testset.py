@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interplay.review.evaluator import chunks
 from interplay.motion.clip import Clip
+from interplay.review.evaluator import chunks
 
 MAX_FRAMES = 200            # 10 s at 20 fps: the evaluator's longest training window
 # Two-person prompts said of one of the two people.

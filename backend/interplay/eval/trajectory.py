@@ -17,7 +17,6 @@ import numpy as np
 
 from interplay.motion.clip import DATA_DIR, Clip, default_clips
 from interplay.motion.kinematics import facing_angle
-from interplay.trajectory.curves import make_curve
 from interplay.trajectory.apply import (
     DEFAULT,
     TrajectoryConfig,
@@ -26,6 +25,7 @@ from interplay.trajectory.apply import (
     skating,
     travel,
 )
+from interplay.trajectory.curves import make_curve
 
 WALK_PROMPT = "a person walks forward"
 

@@ -17,8 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from interplay.motion import features
-from interplay.motion import metrics
+from interplay.motion import features, metrics
 from interplay.motion import skeleton as sk
 from interplay.motion.signals import runs, smooth
 

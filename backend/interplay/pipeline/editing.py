@@ -13,9 +13,9 @@ import numpy as np
 
 from interplay.generators.base import Editor, EditUnavailable
 from interplay.motion.metrics import clip_metrics
-from interplay.store import MotionRepository, StoredMotion
 from interplay.pipeline.highlights import highlight_lists
 from interplay.pipeline.motion_json import plain
+from interplay.store import MotionRepository, StoredMotion
 
 
 def edit_joints(generator, people: list[np.ndarray], plan: dict | None, prompt: str | None,

@@ -24,8 +24,8 @@ import numpy as np
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
-from interplay.review.reviewer import CannotApply, correct
 from interplay.pipeline.segment_source import Cancelled, SegmentSource
+from interplay.review.reviewer import CannotApply, correct
 
 log = logging.getLogger(__name__)
 CHUNK = 40

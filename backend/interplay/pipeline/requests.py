@@ -43,8 +43,9 @@ class TrajectoryIn(BaseModel):
             if self.model_extra:
                 raise ValueError(f"unexpected fields with points: {sorted(self.model_extra)}")
         else:
-            from interplay.planner.schema import TrajectorySpec
             from pydantic import ValidationError
+
+            from interplay.planner.schema import TrajectorySpec
             try:
                 TrajectorySpec.model_validate(self.spec())
             except ValidationError as exc:

@@ -45,7 +45,7 @@ RULES: list[tuple[str, str, int, str]] = [
      "occasion"),
     (rf"\s*\bin\s+front\s+of\s+(?:his|her|their|the|a|an|my|our)\s+(?:{_AUDIENCE})\b", " ", _I, "audience"),
     (rf"\s*,?\s*\b(?:in\s+order\s+)?to\s+(?:{_PURPOSES})\b[^,.;!?]*", " ", _I, "purpose"),
-    (rf"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|their)\s+[\w\s'’-]{{0,40}}?celebration\b", " ", _I,
+    (r"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|their)\s+[\w\s'’-]{0,40}?celebration\b", " ", _I,
      "occasion"),
     (rf"\s*\b(?:in|with|out\s+of)\s+(?:pure\s+|great\s+|sheer\s+)?(?:{_STATES})\b", " ", _I, "mood"),
     (rf"\b(?:{_EMOTIONS})\b\s*", "", _I, "mood"),

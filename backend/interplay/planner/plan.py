@@ -261,8 +261,8 @@ def _timed(prompt, persons, seconds, steps: list[_Step], reasons) -> Plan:
 def plan(prompt: str, persons: int = 1, seconds: float | None = None, settings=None) -> Plan:
     """The plan for a prompt: the configured LLM when there is one (falling back to the
     embedded planner on any failure), else the embedded planner."""
-    from interplay.settings import get_settings
     from interplay.planner.vocabulary import load_vocabulary
+    from interplay.settings import get_settings
 
     _check(prompt, persons, seconds)
     settings = settings or get_settings()

@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion import skeleton as sk
-from interplay.motion.kinematics import facing_angle, fit_offsets, fit_to_skeleton
+from interplay.motion.kinematics import facing_angle, fit_offsets
 from interplay.motion.rotations import yaw_matrix
 from interplay.reaction.penetration import ActorSpheres, guide, radii, sphere_centres
 from interplay.settings import REPO_ROOT

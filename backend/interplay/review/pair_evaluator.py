@@ -31,7 +31,6 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import floor_height
 from interplay.motion.pair.windows import canonical_window, distance_map, relative_root
-
 from interplay.review.evaluator import Evaluator, _unit, chunks, open_weights
 from interplay.settings import REPO_ROOT
 

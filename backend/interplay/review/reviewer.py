@@ -25,8 +25,8 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.captions import PARTS, summarise
 from interplay.motion.posecodes import caption_clip
-from interplay.review.checks import Checks, commonsense, worse
 from interplay.review.agreement import BODY_CUES, caption_agreement, confirms
+from interplay.review.checks import Checks, commonsense, worse
 
 PLAN_PART = {"left_arm": "left_upper", "right_arm": "right_upper",
              "left_leg": "left_lower", "right_leg": "right_lower"}

@@ -44,11 +44,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from interplay.motion import skeleton as sk
+from interplay.motion.footlock import pin_feet
 from interplay.motion.kinematics import facing_angle, facing_direction, fit_to_skeleton
 from interplay.motion.metrics import person_metrics
 from interplay.trajectory import bspline
 from interplay.trajectory.curves import drop_repeats, length, make_curve
-from interplay.motion.footlock import pin_feet
 
 
 @dataclass(frozen=True)

@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from interplay.generators.coda.runtime import CodaRuntime
-from interplay.generators.coda.files import DEFAULT_DIR, FILES
 from interplay.eval.pair import pair_set
+from interplay.generators.coda.files import DEFAULT_DIR, FILES
+from interplay.generators.coda.runtime import CodaRuntime
 from interplay.motion.metrics import bone_deviation
 
 pytestmark = pytest.mark.skipif(not all((DEFAULT_DIR / f).is_file() for f in FILES),

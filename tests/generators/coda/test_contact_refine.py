@@ -8,16 +8,16 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from interplay.generators.coda.runtime import CodaRuntime
-from interplay.generators.coda.files import DEFAULT_DIR, FILES
-from interplay.generators.coda.generator import CodaGenerator
+from interplay.eval.pair_report import CONTACT_PROMPTS
+from interplay.generators.base import Request
 from interplay.generators.coda.contact_kinds import candidates, contact_kind
 from interplay.generators.coda.contact_refine import pair_numbers, reach_gaps, refine_contact
-from interplay.generators.base import Request
-from interplay.review.checks import CONTACT_VERBS
-from interplay.eval.pair_report import CONTACT_PROMPTS
+from interplay.generators.coda.files import DEFAULT_DIR, FILES
+from interplay.generators.coda.generator import CodaGenerator
+from interplay.generators.coda.runtime import CodaRuntime
 from interplay.motion import skeleton as sk
 from interplay.motion.pair.compose import HELD_PROMPT, PROMPTS
+from interplay.review.checks import CONTACT_VERBS
 
 HAVE_CODA = all((DEFAULT_DIR / f).is_file() for f in FILES)
 needs_coda = pytest.mark.skipif(not HAVE_CODA, reason="no CODA weights committed yet")

@@ -1,7 +1,7 @@
 import numpy as np
-from tests.helpers.synthetic_motion import fk_motion
 
 from interplay.generators.retrieval.matching import best_start, pose_features
+from tests.helpers.synthetic_motion import fk_motion
 
 
 def test_features_ignore_where_the_person_stands_and_faces():

@@ -4,10 +4,10 @@ conftest.py): train preference, seed determinism, chaining, streaming, two-perso
 import numpy as np
 import pytest
 
-from interplay.generators.retrieval.generator import CHUNK
 from interplay.generators.base import Request
-from interplay.generators.router import load_generator
+from interplay.generators.retrieval.generator import CHUNK
 from interplay.generators.retrieval.stitch import heading
+from interplay.generators.router import load_generator
 from interplay.motion import skeleton as sk
 
 

@@ -1,9 +1,9 @@
 import numpy as np
-from tests.helpers.synthetic_motion import fk_motion
 
+from interplay.generators.retrieval.stitch import FADE, Piece, Stitcher, crossfade, heading
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import facing_angle, fit_offsets
-from interplay.generators.retrieval.stitch import FADE, Piece, Stitcher, crossfade, heading
+from tests.helpers.synthetic_motion import fk_motion
 
 
 def _piece(joints, offsets, start, end):

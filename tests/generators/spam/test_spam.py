@@ -8,7 +8,6 @@ import shutil
 
 import numpy as np
 import pytest
-from tests.helpers.spam_stub import StubEncoder, stub_runtime
 
 from interplay.generators import masked_decoding as md
 from interplay.generators.spam.runtime import (
@@ -21,6 +20,7 @@ from interplay.generators.spam.sequence import layout
 from interplay.motion import features as F
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import default_clips
+from tests.helpers.spam_stub import StubEncoder, stub_runtime
 
 LOWER = np.unique(np.concatenate([sk.PART_JOINTS["left_lower"], sk.PART_JOINTS["right_lower"]]))
 

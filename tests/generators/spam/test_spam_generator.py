@@ -8,19 +8,17 @@ import shutil
 
 import numpy as np
 import pytest
+
+from interplay.generators.base import EditUnavailable, Request
+from interplay.generators.retrieval.generator import CHUNK
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.router import with_spam
+from interplay.generators.spam.generator import resolve_edit_part, segment_texts
+from interplay.generators.spam.runtime import DEFAULT_DIR, part_texts
+from interplay.generators.weights import placeholder_reason
+from interplay.motion import skeleton as sk
 from tests.helpers.spam_stub import StubEncoder
 from tests.helpers.synthetic_motion import fk_motion, stand_in_clips
-
-from interplay.generators.retrieval.generator import CHUNK
-from interplay.generators.base import Request
-from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.spam.runtime import DEFAULT_DIR
-from interplay.generators.spam.runtime import part_texts
-from interplay.generators.base import EditUnavailable
-from interplay.generators.weights import placeholder_reason
-from interplay.generators.spam.generator import resolve_edit_part, segment_texts
-from interplay.generators.router import with_spam
-from interplay.motion import skeleton as sk
 
 
 @pytest.fixture(scope="module")

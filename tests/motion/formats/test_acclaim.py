@@ -1,7 +1,6 @@
 """Acclaim ASF/AMC reader and FK: a hand-made skeleton with answers worked out by hand, and
 real HDM05 files (tests/fixtures/raw, made by tests/fixtures/make_fixtures.py)."""
 
-from pathlib import Path
 
 import numpy as np
 import pytest

@@ -1,16 +1,14 @@
 """The 45-sphere body and its intersection volume, on real CMU captures (tests/fixtures/raw,
 made by tests/fixtures/make_fixtures.py): a walk and the salsa pair 60_01/61_01."""
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from interplay.motion.pair import body
 from interplay.motion import skeleton as sk
+from interplay.motion.pair import body
 from interplay.motion.retarget.cmu_daz import load_cmu_bvh, load_salsa_pair
 from tests.helpers.paths import RAW
-
 
 
 @pytest.fixture(scope="module")

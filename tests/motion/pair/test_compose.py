@@ -4,14 +4,14 @@ with the project's own metrics (interplay.motion.metrics) and sphere body."""
 import numpy as np
 import pytest
 
-from interplay.motion.pair import compose as C
-from interplay.motion.pair.bases import standing_bases
-from interplay.motion.pair import placement as pl
 from interplay.motion import skeleton as sk
-from interplay.motion.pair.body import body_spheres, surface_gaps
 from interplay.motion.clip import default_clips
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.metrics import clip_metrics, frame_highlights
+from interplay.motion.pair import compose as C
+from interplay.motion.pair import placement as pl
+from interplay.motion.pair.bases import standing_bases
+from interplay.motion.pair.body import body_spheres, surface_gaps
 
 N = 8        # samples per kind (seeds 0 … N-1)
 
@@ -72,7 +72,7 @@ def test_hands_are_apart_before_the_reach(composed, kind):
 
 
 def test_bodies_do_not_interpenetrate_and_bones_keep_their_length(composed):
-    for kind, clips in composed.items():
+    for _kind, clips in composed.items():
         for c in clips:
             assert _torso_overlap(c).mean() <= 0.05, (c.id, _torso_overlap(c).mean())
             for p, off in zip(_people(c), c.offsets):

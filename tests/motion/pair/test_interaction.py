@@ -1,16 +1,14 @@
 """CODA's two-person geometry (joint distance map, Gaussian weights, part chains, AABB, eq. 6
 and 7) on the real salsa pair 60_01/61_01 (tests/fixtures/raw, made by tests/fixtures/make_fixtures.py)."""
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from interplay.motion.pair import body, interaction
 from interplay.motion import skeleton as sk
+from interplay.motion.pair import body, interaction
 from interplay.motion.retarget.cmu_daz import load_salsa_pair
 from tests.helpers.paths import RAW
-
 
 
 @pytest.fixture(scope="module")

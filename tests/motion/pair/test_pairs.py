@@ -3,11 +3,11 @@
 import numpy as np
 import pytest
 
-from interplay.motion.pair import compose as C
-from interplay.motion.pair import windows as P
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import default_clips
 from interplay.motion.kinematics import facing_angle
+from interplay.motion.pair import compose as C
+from interplay.motion.pair import windows as P
 
 
 @pytest.fixture(scope="module")

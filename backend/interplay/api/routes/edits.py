@@ -7,11 +7,12 @@ import logging
 
 from fastapi import APIRouter, HTTPException, Request
 
+from interplay.api.deps import RepoDep
+from interplay.api.deps import generator as loaded_generator
+from interplay.api.schemas import ERRORS, EditCreate, MotionOut
 from interplay.generators.base import EditUnavailable
-from interplay.api.deps import RepoDep, generator as loaded_generator
 from interplay.pipeline.editing import edit_stored
 from interplay.pipeline.motion_json import motion_payload
-from interplay.api.schemas import ERRORS, EditCreate, MotionOut
 
 log = logging.getLogger(__name__)
 router = APIRouter(prefix="/api", tags=["motions"])

@@ -5,10 +5,11 @@ from __future__ import annotations
 
 from fastapi import APIRouter, HTTPException, Request
 
-from interplay.api.deps import JobsDep, RepoDep, generator as loaded_generator
+from interplay.api.deps import JobsDep, RepoDep
+from interplay.api.deps import generator as loaded_generator
 from interplay.api.jobs import JobSpec
-from interplay.generators.base import random_seed
 from interplay.api.schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
+from interplay.generators.base import random_seed
 
 router = APIRouter(prefix="/api/jobs", tags=["jobs"])
 

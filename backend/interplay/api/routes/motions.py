@@ -8,11 +8,11 @@ from typing import Annotated, Literal
 
 from fastapi import APIRouter, HTTPException, Query, Response
 
-from interplay.motion import skeleton as sk
-from interplay.store import StoredMotion
 from interplay.api.deps import RepoDep
-from interplay.pipeline.motion_json import motion_file, motion_payload
 from interplay.api.schemas import ERRORS, History, MotionOut, SkeletonOut
+from interplay.motion import skeleton as sk
+from interplay.pipeline.motion_json import motion_file, motion_payload
+from interplay.store import StoredMotion
 
 router = APIRouter(prefix="/api", tags=["motions"])
 

@@ -12,7 +12,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from interplay.api.events import DoneEvent, MetricsEvent, from_pipeline, frames_event, highlights_event
+from interplay.api.events import DoneEvent, MetricsEvent, frames_event, from_pipeline, highlights_event
 from interplay.generators.base import Generator, Request
 from interplay.motion.metrics import clip_metrics
 from interplay.motion.skeleton import FPS, NUM_JOINTS

@@ -12,9 +12,6 @@ import time
 
 import numpy as np
 
-from interplay.pipeline.segment_source import Cancelled
-from interplay.motion.metrics import clip_metrics
-from interplay.motion.skeleton import FPS, NUM_JOINTS
 from interplay.api.events import (
     DoneEvent,
     MetricsEvent,
@@ -23,10 +20,13 @@ from interplay.api.events import (
     frames_event,
     highlights_event,
 )
+from interplay.motion.metrics import clip_metrics
+from interplay.motion.skeleton import FPS, NUM_JOINTS
+from interplay.pipeline.motion_json import joints_list, plain
 from interplay.pipeline.orchestrator import StageError
+from interplay.pipeline.segment_source import Cancelled
 from interplay.reaction.react import open_session
 from interplay.reaction.session import get_reaction_model
-from interplay.pipeline.motion_json import joints_list, plain
 
 CHUNK = 10          # frames per streamed event (0.5 s): the reactor is generated frame by frame
 

@@ -26,8 +26,8 @@ from typing import Callable
 
 import numpy as np
 
-from interplay.motion.pair import placement as pl
 from interplay.motion import skeleton as sk
+from interplay.motion.pair import placement as pl
 from interplay.motion.pair.body import HAND_SPHERES, SPHERE_FRACTION, SPHERE_RADII, body_scale
 from interplay.motion.pair.compose import CHEST_RADIUS, hug_targets
 from interplay.motion.pair.windows import to_heading_frame

@@ -28,11 +28,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from interplay.motion.pair import placement as pl
-from interplay.motion import skeleton as sk
-from interplay.motion.ik import reach, two_bone_ik, window_weights
-from interplay.motion.metrics import pair_geometry
-from interplay.motion.signals import runs, smooth
 from interplay.generators.coda.contact_kinds import (
     HAND_EXT,
     KINDS,
@@ -43,6 +38,11 @@ from interplay.generators.coda.contact_kinds import (
     hand_centre,
     hand_radius,
 )
+from interplay.motion import skeleton as sk
+from interplay.motion.ik import reach, two_bone_ik, window_weights
+from interplay.motion.metrics import pair_geometry
+from interplay.motion.pair import placement as pl
+from interplay.motion.signals import runs, smooth
 
 MAX_APPROACH = 0.6         # m the two people may move towards each other in total
 REACH_SHARE = 0.95         # of an arm's length (upper arm + forearm) a wrist may go from the shoulder

@@ -22,8 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from interplay.motion import skeleton as sk
 from interplay.generators.spam.files import OnnxGraph
+from interplay.motion import skeleton as sk
 from interplay.settings import REPO_ROOT
 
 DEFAULT_DIR = REPO_ROOT / "models" / "weights" / "coda"

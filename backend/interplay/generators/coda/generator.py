@@ -15,11 +15,11 @@ from typing import Iterator
 
 import numpy as np
 
-from interplay.motion import skeleton as sk
-from interplay.generators.coda.runtime import CHUNK, CodaRuntime
+from interplay.generators.base import Request
 from interplay.generators.coda.contact_kinds import contact_kind
 from interplay.generators.coda.finish import finish_pair, hold_feet
-from interplay.generators.base import Request
+from interplay.generators.coda.runtime import CHUNK, CodaRuntime
+from interplay.motion import skeleton as sk
 from interplay.planner.plan import plan_json
 
 

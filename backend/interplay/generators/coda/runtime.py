@@ -36,11 +36,11 @@ from typing import Iterator
 
 import numpy as np
 
+from interplay.generators import masked_decoding as md
+from interplay.generators.coda.files import DEFAULT_DIR, CodaConfig, Normalizer, load_files
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import facing_angle, fit_offsets, fit_to_skeleton, floor_height
 from interplay.motion.rotations import yaw_matrix
-from interplay.generators import masked_decoding as md
-from interplay.generators.coda.files import DEFAULT_DIR, CodaConfig, Normalizer, load_files
 
 CONTEXT = 5      # tokens (1 s) of the motion so far that a following window sees
 SEAM = 8         # frames over which a window's offset to the previous frame fades out

@@ -19,11 +19,11 @@ from collections.abc import Iterator
 import numpy as np
 
 from interplay.generators.base import Request, generate_motion
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.retrieval.stitch import Stitcher
 from interplay.motion.motion import Motion
 from interplay.motion.skeleton import PELVIS
 from interplay.planner.plan import plan_json
-from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.retrieval.stitch import Stitcher
 
 CHUNK = 40          # frames per streamed chunk at most (2 s)
 SPACING = 1.5       # metres between two composed people

@@ -19,9 +19,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interplay.motion.clip import Clip
 from interplay.generators.retrieval.matching import best_start, pose_features
 from interplay.generators.retrieval.stitch import FADE, Piece
+from interplay.motion.clip import Clip
 
 
 @dataclass(frozen=True)

@@ -10,10 +10,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interplay.motion import features as F
-from interplay.motion import skeleton as sk
-from interplay.motion.kinematics import fit_offsets
-from interplay.motion.rotations import yaw_matrix
 from interplay.generators.spam.splice import (
     compose,
     edited_joints,
@@ -23,6 +19,10 @@ from interplay.generators.spam.splice import (
     time_weights,
     yaw_between,
 )
+from interplay.motion import features as F
+from interplay.motion import skeleton as sk
+from interplay.motion.kinematics import fit_offsets
+from interplay.motion.rotations import yaw_matrix
 
 PARTS = sk.PART_NAMES
 BLEND_CONTEXT = 10       # tokens of each neighbour a transition sees (2 s)

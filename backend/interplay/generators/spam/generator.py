@@ -9,18 +9,16 @@ fallback when its weights are missing or untrained, is the router's (`generators
 
 from __future__ import annotations
 
-import json
 import logging
 import secrets
-from pathlib import Path
 from typing import Iterator
 
 import numpy as np
 
+from interplay.generators.base import Request
+from interplay.generators.spam.runtime import Edit, SpamRuntime
 from interplay.motion import skeleton as sk
-from interplay.generators.base import EditUnavailable, Request
 from interplay.planner.plan import plan_json
-from interplay.generators.spam.runtime import DEFAULT_DIR, Edit, SpamRuntime
 
 log = logging.getLogger(__name__)
 WHOLE_BODY = ("whole_body", "body", "all", "full_body")

@@ -25,19 +25,18 @@ from typing import Iterator, Mapping
 
 import numpy as np
 
-from interplay.motion import skeleton as sk
 from interplay.generators import masked_decoding as md
-from interplay.generators.spam.splice import seam_corrected
+from interplay.generators.spam.cfg_sessions import GuidedPair
 from interplay.generators.spam.edits import (
     Edit,
     blend,
     edit,
     transition_codes,
-    untouched_change_cm,
 )  # noqa: F401
-from interplay.generators.spam.cfg_sessions import GuidedPair
 from interplay.generators.spam.files import SpamConfig, load_files
 from interplay.generators.spam.sequence import Assembler, layout
+from interplay.generators.spam.splice import seam_corrected
+from interplay.motion import skeleton as sk
 from interplay.settings import REPO_ROOT
 
 DEFAULT_DIR = REPO_ROOT / "models" / "weights" / "spam"

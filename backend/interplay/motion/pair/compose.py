@@ -28,13 +28,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from interplay.motion.pair import placement as pl
 from interplay.motion import skeleton as sk
-from interplay.motion.pair.bases import face_forward, refit
-from interplay.motion.pair.body import body_scale
 from interplay.motion.clip import Clip
 from interplay.motion.ik import ease, reach, two_bone_ik, window_weights
 from interplay.motion.kinematics import canonicalize, resample
+from interplay.motion.pair import placement as pl
+from interplay.motion.pair.bases import face_forward, refit
+from interplay.motion.pair.body import body_scale
 from interplay.motion.pair.placement import SPINE3, UP, Pool, pool_of
 
 KINDS = ("handshake", "high_five", "hug", "push", "wave", "walk_side_by_side")

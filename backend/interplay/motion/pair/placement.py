@@ -13,6 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from interplay.motion import skeleton as sk
+from interplay.motion.ik import reach, two_bone_ik
+from interplay.motion.kinematics import facing_direction
 from interplay.motion.pair.bases import (
     Base,
     base_joints,
@@ -24,8 +26,6 @@ from interplay.motion.pair.bases import (
     walk_bases,
 )
 from interplay.motion.pair.body import SPHERE_JOINT, body_spheres, surface_gaps
-from interplay.motion.ik import reach, two_bone_ik
-from interplay.motion.kinematics import facing_direction
 from interplay.motion.rotations import yaw_matrix
 
 UP = np.array([0.0, 1.0, 0.0])

@@ -15,8 +15,8 @@ import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import Clip
-from interplay.motion.pair.interaction import joint_distance_map
 from interplay.motion.kinematics import facing_angle
+from interplay.motion.pair.interaction import joint_distance_map
 from interplay.motion.rotations import yaw_matrix
 
 # Index of each joint's mirror image (left_* ↔ right_*; centre joints map to themselves).

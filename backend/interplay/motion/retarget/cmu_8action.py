@@ -42,9 +42,9 @@ from pathlib import Path
 
 import numpy as np
 
-from interplay.motion.rotations import axis_angle_to_matrix
 from interplay.motion.retarget import canonicalize, to_smpl22
 from interplay.motion.retarget.hdm05 import JOINT_MAP as ACCLAIM_JOINT_MAP
+from interplay.motion.rotations import axis_angle_to_matrix
 
 FPS_8ACTION = 120.0
 VALUES_PER_FRAME = 117
