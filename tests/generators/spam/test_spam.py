@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from interplay.generators import masked_decoding as md
+from interplay.generators.spam.edits import untouched_change_cm
 from interplay.generators.spam.runtime import (
     DEFAULT_DIR,
     SpamRuntime,
     part_texts,
-    untouched_change_cm,
 )
 from interplay.generators.spam.sequence import layout
 from interplay.motion import features as F
