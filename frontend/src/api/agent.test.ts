@@ -12,13 +12,16 @@ const plan = {
 const events: StreamEvent[] = [
   { type: "plan", plan },
   { type: "segment", index: 0, status: "generating", generator: "spam" },
-  { type: "segment", index: 0, status: "done" },
+  { type: "segment", index: 0, status: "done" } as StreamEvent, // tolerated without its generator
   {
     type: "review",
     segment: 0,
     round: 0,
     captions: { body: "a person walks", left_upper: "arm swings" },
+    summary: "A person walks.",
     score: 0.41,
+    score_kind: "caption_agreement",
+    confirmed: { left_arm: false },
     checks: {},
     instructions: [{ kind: "edit_part", part: "left_arm", prompt: "wave", frames: [10, 30], reason: "no wave" }],
     verdict: "correct",
@@ -32,7 +35,19 @@ const events: StreamEvent[] = [
     score_before: 0.41,
     score_after: 0.66,
   },
-  { type: "review", segment: 0, round: 1, captions: { body: "waves" }, score: 0.66, instructions: [], verdict: "ok" },
+  {
+    type: "review",
+    segment: 0,
+    round: 1,
+    captions: { body: "waves" },
+    summary: "A person waves.",
+    score: 0.66,
+    score_kind: "caption_agreement",
+    confirmed: { left_arm: true },
+    checks: {},
+    instructions: [],
+    verdict: "ok",
+  },
 ];
 
 describe("reduceAgent", () => {

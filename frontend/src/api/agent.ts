@@ -15,7 +15,8 @@ export interface Correction {
   instruction: Instruction;
   accepted: boolean;
   scoreBefore: number;
-  scoreAfter: number;
+  /** null when the instruction could not be applied. */
+  scoreAfter: number | null;
 }
 
 export interface SegmentProgress {
@@ -88,7 +89,8 @@ export function agentFromReview(review: unknown): AgentState {
   if (!Array.isArray(segs)) return initialAgent;
   let state = initialAgent;
   for (const seg of segs) {
-    state = reduceAgent(state, { type: "segment", index: seg.segment, status: "done" });
+    // A stored review does not say which generator ran the segment.
+    state = reduceAgent(state, { type: "segment", index: seg.segment, status: "done" } as StreamEvent);
     for (const r of seg.reviews ?? []) state = reduceAgent(state, { type: "review", ...(r as object), segment: seg.segment } as StreamEvent);
     for (const c of seg.corrections ?? [])
       state = reduceAgent(state, { type: "correction", ...(c as object), segment: seg.segment } as StreamEvent);

@@ -125,27 +125,33 @@ export interface Skeleton {
   colours: Record<string, string>;
 }
 
+/** One job-stream event; mirrors the pydantic models in backend/interplay/api/events.py
+ * (`EVENTS`), checked field by field by tests/api/test_events.py. Optional (`?`) exactly
+ * where the server may leave a field out (its `OMIT_NONE`); `| null` where it may send null. */
 export type StreamEvent =
   | { type: "plan"; plan: Plan }
+  | { type: "segment"; index: number; status: "generating" | "done"; generator: string }
   | { type: "frames"; start: number; total: number; people: PersonFrames[] }
   | {
       type: "highlights";
       start: number;
       contacts: [number, number][][];
       penetration: [number, string][][];
-      min_distance: number[] | null;
+      min_distance: (number | null)[] | null;
     }
-  | { type: "metrics"; metrics: Metrics }
-  | { type: "done"; motion_id: string; frames: number }
-  | { type: "error"; message: string; cancelled?: boolean }
-  | { type: "segment"; index: number; status: "generating" | "done" | string; generator?: string }
   | {
       type: "review";
       segment: number;
       round: number;
+      /** Part → caption text (person 0). */
       captions: Record<string, string>;
+      summary: string;
       score: number;
-      checks?: Record<string, unknown>;
+      /** "evaluator" | "caption_agreement". */
+      score_kind: string;
+      /** Planned part → whether its caption confirms the edit. */
+      confirmed: Record<string, boolean>;
+      checks: Record<string, unknown>;
       instructions: Instruction[];
       verdict: "ok" | "correct" | string;
     }
@@ -156,7 +162,12 @@ export type StreamEvent =
       instruction: Instruction;
       accepted: boolean;
       score_before: number;
-      score_after: number;
-    };
+      /** null when the instruction could not be applied. */
+      score_after: number | null;
+      reason?: string;
+    }
+  | { type: "metrics"; metrics: Metrics }
+  | { type: "done"; motion_id: string; frames: number }
+  | { type: "error"; message: string; stage?: string; cancelled?: boolean };
 
 export type ExportFormat = "bvh" | "json";

@@ -79,7 +79,7 @@ export class FrameBuffer {
   setHighlights(ev: Pick<HighlightsEvent, "start" | "contacts" | "penetration" | "min_distance">): void {
     ev.contacts.forEach((c, i) => (this.contacts[ev.start + i] = c));
     ev.penetration.forEach((c, i) => (this.penetration[ev.start + i] = c));
-    ev.min_distance?.forEach((d, i) => (this.minDistance[ev.start + i] = d));
+    ev.min_distance?.forEach((d, i) => (this.minDistance[ev.start + i] = d ?? undefined));
     this.version++;
   }
 

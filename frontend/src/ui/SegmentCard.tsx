@@ -66,7 +66,7 @@ export function SegmentCard({ index, seg, progress, canRerun, canInbetween }: Pr
             .map((c, k) => (
               <p key={k} className="small" data-testid="correction">
                 {c.accepted ? "✓ accepted" : "✗ rejected"} {describeInstruction(c.instruction)} ·{" "}
-                {c.scoreBefore.toFixed(2)} → {c.scoreAfter.toFixed(2)}
+                {c.scoreBefore.toFixed(2)} → {c.scoreAfter === null ? "—" : c.scoreAfter.toFixed(2)}
               </p>
             ))}
         </div>
