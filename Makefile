@@ -1,5 +1,5 @@
 # The two commands of the README: `make run` (install what is missing, start the app on
-# http://127.0.0.1:8000) and `make test` (install what is missing, run every test).
+# http://127.0.0.1:8000) and `make test` (install what is missing, lint, run every test).
 # Installing is idempotent: stamps record what was installed for which inputs.
 
 PYTHON ?= python3
@@ -11,12 +11,13 @@ FRONT_SRC := $(shell find frontend/src frontend/index.html frontend/vite.config.
 HOST ?= 127.0.0.1
 PORT ?= 8000
 
-.PHONY: run test install test-py test-front test-e2e frontend data train train-deps train-smoke chromium clean
+.PHONY: run test install lint test-py test-front test-e2e frontend data train train-deps train-smoke chromium clean
 
 run: install frontend/dist/index.html
 	$(BIN)/interplay serve --host $(HOST) --port $(PORT)
 
 test: install train-deps frontend/dist/index.html chromium
+	$(MAKE) lint
 	$(MAKE) test-py test-front test-e2e
 
 install: $(PY_STAMP) $(NPM_STAMP)
@@ -36,6 +37,13 @@ frontend/dist/index.html: $(NPM_STAMP) $(FRONT_SRC)
 # Debian's Chromium for the end-to-end tests (never a browser download).
 chromium:
 	@command -v chromium >/dev/null || { apt-get update -qq && apt-get install -y -qq chromium >/dev/null; }
+
+# Static checks, run first by `make test`: ruff and mypy (configured in pyproject.toml) on the
+# Python code, tsc on the front end.
+lint: install
+	$(BIN)/ruff check .
+	$(BIN)/mypy
+	npm run typecheck --workspace frontend
 
 test-py:
 	$(BIN)/python -m pytest -q

@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import time
 from pathlib import Path
+from typing import Any
 
 from interplay.bench.model import _row, _timed
 
@@ -30,11 +31,12 @@ def run_pair_bench(weights_dir: str | Path | None = None, runs: int = 10, warmup
     except Exception as exc:
         return {"weights": str(weights_dir), "error": f"{type(exc).__name__}: {exc}"}
     c = rt.config
-    report = {"weights": str(weights_dir), "trained": placeholder_reason(weights_dir, "CODA") is None,
-              "load_s": round(time.perf_counter() - t0, 3), "cpus": os.cpu_count(), "threads": 2,
-              "load_avg_1m": round(os.getloadavg()[0], 2), "codes": c.codes,
-              "steps": c.steps, "cfg": c.cfg, "window_tokens": c.window_tokens, "generate": [],
-              "target_ms": TARGET_MS}
+    report: dict[str, Any] = {
+        "weights": str(weights_dir), "trained": placeholder_reason(weights_dir, "CODA") is None,
+        "load_s": round(time.perf_counter() - t0, 3), "cpus": os.cpu_count(), "threads": 2,
+        "load_avg_1m": round(os.getloadavg()[0], 2), "codes": c.codes,
+        "steps": c.steps, "cfg": c.cfg, "window_tokens": c.window_tokens, "generate": [],
+        "target_ms": TARGET_MS}
     for s in seconds:
         frames = round(s * 20)
         times = _timed(lambda i, s=s: rt.generate(PROMPTS[i % len(PROMPTS)], s, seed=i), runs, warmup)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import time
+from typing import Any
 
 import numpy as np
 
@@ -26,9 +27,10 @@ def run_reaction_bench(frames: int = 200, warmup: int = 20) -> dict:
     clip = next(c for c in default_clips() if c.split == "test" and len(c.people) == 2
                 and not c.synthetic)
     actor = np.asarray(clip.people[0][:frames + warmup], dtype=np.float64)
-    report = {"clip": clip.id, "window": model.window, "steps": model.sampling.steps,
-              "cpus": os.cpu_count(), "load_avg_1m": round(os.getloadavg()[0], 2),
-              "target_ms": TARGET_MS, "rows": []}
+    report: dict[str, Any] = {
+        "clip": clip.id, "window": model.window, "steps": model.sampling.steps,
+        "cpus": os.cpu_count(), "load_avg_1m": round(os.getloadavg()[0], 2),
+        "target_ms": TARGET_MS, "rows": []}
     from interplay.reaction.react import open_session
     for cache, guidance in ((False, False), (False, True), (True, False), (True, True)):
         if cache and model.step_session is None:

@@ -24,15 +24,17 @@ def cmd_generate(args) -> int:
                          seed=args.seed)
     except ValidationError as exc:
         raise CliError(readable_errors(exc.errors())) from None
+    prompt = body.prompt
+    assert prompt is not None                     # --prompt is required and validated non-empty
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
     generator = load_generator(get_settings().data_dir, get_settings().spam_dir,
                                coda_dir=get_settings().coda_dir)
-    motion = generator.generate(Request(body.prompt, body.persons, body.seconds, seed))
+    motion = generator.generate(Request(prompt, body.persons, body.seconds, seed))
     if not motion.metrics:
         motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
-    motion.prompt, motion.seed = motion.prompt or body.prompt, seed
+    motion.prompt, motion.seed = motion.prompt or prompt, seed
     write_text(args.out, json.dumps(plain(motion.to_json()), separators=(",", ":")))
     print(f"wrote {args.out}: {len(motion.people)} person(s), {motion.frames} frames "
           f"({motion.seconds:g} s), seed {seed}", file=sys.stderr)

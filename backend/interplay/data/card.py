@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections import Counter, defaultdict
+from collections.abc import Sequence
 from pathlib import Path
 
 from interplay.motion.clip import Clip
@@ -34,7 +35,7 @@ def _hours(frames: int) -> float:
     return frames / FPS / 3600
 
 
-def _composed_lines(clips: list[Clip], notes=()) -> list[str]:
+def _composed_lines(clips: list[Clip], notes: Sequence[str] = ()) -> list[str]:
     """The composed pairs: how they are made, how many of each kind per split."""
     composed = [c for c in clips if c.source == "composed"]
     lines = ["", "### Composed two-person clips (`composed.npz`)", "",
@@ -58,8 +59,8 @@ def _composed_lines(clips: list[Clip], notes=()) -> list[str]:
     return lines
 
 
-def write_card(clips: list[Clip], out_dir: Path, skipped: list[tuple[str, list[str]]] = (),
-               composed_notes=()) -> None:
+def write_card(clips: list[Clip], out_dir: Path, skipped: Sequence[tuple[str, list[str]]] = (),
+               composed_notes: Sequence[str] = ()) -> None:
     by_source: dict[str, list[Clip]] = defaultdict(list)
     for c in clips:
         by_source[c.source].append(c)

@@ -59,7 +59,7 @@ FRAMES = 120             # 6 s
 
 def untouched_cm(base: np.ndarray, edited: np.ndarray, parts: list[str]) -> float:
     """Mean distance (cm) over frames and the joints in none of `parts`."""
-    touched = set()
+    touched: set[int] = set()
     for p in parts:
         touched.update(int(j) for j in sk.PART_JOINTS[sk.resolve_part(p)])
     keep = [j for j in range(sk.NUM_JOINTS) if j not in touched]

@@ -33,12 +33,12 @@ def r_precision(motion: np.ndarray, text: np.ndarray, labels: list[str],
     replacement while there are enough such samples, with replacement otherwise)."""
     motion, text = np.asarray(motion, np.float64), np.asarray(text, np.float64)
     _check_pairs(motion, text)
-    labels = np.asarray(labels, dtype=object)
-    if len(labels) != len(motion):
-        raise ValueError(f"{len(labels)} labels for {len(motion)} samples")
+    label_arr = np.asarray(labels, dtype=object)
+    if len(label_arr) != len(motion):
+        raise ValueError(f"{len(label_arr)} labels for {len(motion)} samples")
     hits = np.zeros(top_k)
     for i in range(len(motion)):
-        others = np.flatnonzero(labels != labels[i])
+        others = np.flatnonzero(label_arr != label_arr[i])
         if len(others) == 0:
             raise ValueError("R-precision needs samples with at least two different texts")
         pick = rng.choice(others, size=pool - 1, replace=len(others) < pool - 1)

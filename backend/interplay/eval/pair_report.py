@@ -19,6 +19,7 @@ those composed clips themselves is the `real` column (a check of the check).
 from __future__ import annotations
 
 import time
+from typing import Any
 
 import numpy as np
 
@@ -74,8 +75,8 @@ def touches(pair: np.ndarray, window: list[int]) -> bool:
 def contact_check(generators: dict, clips, seeds: int = 10, seed: int = 0, log=None) -> dict:
     kinds = contact_windows(clips)
     by_id = {c.id: c for c in clips}
-    out = {"target": TARGET, "tolerance_frames": TOLERANCE, "seeds": seeds, "frames": WINDOW,
-           "kinds": {}}
+    out: dict[str, Any] = {"target": TARGET, "tolerance_frames": TOLERANCE, "seeds": seeds,
+                           "frames": WINDOW, "kinds": {}}
     for kind, info in kinds.items():
         prompt, win = CONTACT_PROMPTS[kind], info["window"]
         real = [touches(np.stack(by_id[i].people), win) for i in info["clips"]]
@@ -136,7 +137,7 @@ def run_eval_pair(rows=ROW_NAMES, repeats: int = 3, seed: int = 0, limit: int | 
         ref = emb(sub.windows)
         ref_train = emb(train.subset(train.synthetic == synthetic).windows)
         real_scores = np.stack([window_scores(w) for w in sub.windows])
-        out = {"windows": len(sub), "rows": {}}
+        out: dict[str, Any] = {"windows": len(sub), "rows": {}}
         for name, gen in generators.items():
             t0 = time.perf_counter()
             runs = _row_repeats(gen, sub, emb, ref, ref_train, real_scores, repeats, seed, rng)

@@ -11,6 +11,7 @@ import argparse
 import json
 import time
 from pathlib import Path
+from typing import Any
 
 from interplay.eval.data import TABLE8
 from interplay.planner.decompose import POSTURE_BASE
@@ -48,7 +49,7 @@ def measure(prompts: list[dict], vocabulary=None) -> dict:
             "repeated": item["repeated"],
             "repeat": any(s.repeat > 1 for s in segs) or len({s.prompt for s in segs}) < len(segs),
             "prompts": [s.prompt for s in segs]})
-    summary = {}
+    summary: dict[str, Any] = {}
     for label in ("short", "medium", "long"):
         sub = [r for r in rows if r["temporal"] == label]
         summary[label] = {"prompts": len(sub), "exact": sum(r["count_exact"] for r in sub),

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -121,7 +122,7 @@ def window_scores(actor: np.ndarray, reactor: np.ndarray) -> np.ndarray:
 def pair_scores(actor: np.ndarray, reactor: np.ndarray, kinds: np.ndarray | None = None) -> dict:
     """Mean scores over the windows; with kinds (N,) also "per_kind": {kind: {iv_cm3, if}}."""
     rows = window_scores(actor, reactor)
-    out = dict(zip(SCORES, map(float, rows.mean(axis=0))))
+    out: dict[str, Any] = dict(zip(SCORES, map(float, rows.mean(axis=0))))
     if kinds is not None:
         out["per_kind"] = {str(k): {"iv_cm3": float(rows[kinds == k, 0].mean()),
                                     "if": float(rows[kinds == k, 1].mean())}
@@ -161,8 +162,8 @@ def run_eval_react(rows=ROWS, repeats: int = 2, seed: int = 0, model: ReactionMo
     train_emb = pair_embedding(ev, train.actor, train.reactor)
     emb = Embedding(train_stats)
     pairs = test_pairs(split)
-    report = {"split": split, "window": WINDOW, "stride": STRIDE, "repeats": repeats,
-              "sampling": vars(sampling or model.sampling), "sets": {}}
+    report: dict[str, Any] = {"split": split, "window": WINDOW, "stride": STRIDE, "repeats": repeats,
+                              "sampling": vars(sampling or model.sampling), "sets": {}}
     for name, sel in (("real", ~pairs.synthetic), ("synthetic", pairs.synthetic)):
         sub = TestPairs(pairs.actor[sel], pairs.reactor[sel], pairs.text[sel], pairs.synthetic[sel],
                         pairs.kind[sel])
@@ -171,14 +172,14 @@ def run_eval_react(rows=ROWS, repeats: int = 2, seed: int = 0, model: ReactionMo
             continue
         ref_stats = emb(window_stats(sub.actor, sub.reactor))
         ref = pair_embedding(ev, sub.actor, sub.reactor)
-        out = {"windows": int(len(sub.actor))}
+        out: dict[str, Any] = {"windows": int(len(sub.actor))}
         for row in rows:
             t0 = time.perf_counter()
             if row == "real":
                 same = train.synthetic == (name == "synthetic")
-                res = {"fid": fid(train_emb[same], ref),
-                       "fid_stats": fid(emb(train_stats[same]), ref_stats),
-                       **pair_scores(sub.actor, sub.reactor, kinds)}
+                res: dict[str, Any] = {"fid": fid(train_emb[same], ref),
+                                       "fid_stats": fid(emb(train_stats[same]), ref_stats),
+                                       **pair_scores(sub.actor, sub.reactor, kinds)}
             else:
                 runs = []
                 for r in range(repeats):

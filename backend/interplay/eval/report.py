@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import asdict, dataclass
+from typing import Any
 
 import numpy as np
 
@@ -56,14 +57,16 @@ def _physical(motions: list[np.ndarray]) -> np.ndarray:
 def _generate_all(row: Row, samples, cfg: EvalConfig, log) -> list[list[np.ndarray]]:
     """Candidate motions per sample: mm_generations for the first sample of each distinct text,
     `rounds` for the others."""
-    first = {}
+    generate = row.generate
+    assert generate is not None                   # only "generated" rows come here
+    first: dict[str, int] = {}
     for i, s in enumerate(samples):
         first.setdefault(s.text, i)
     reps = set(first.values())
     out = []
     for i, s in enumerate(samples):
         n = cfg.mm_generations if i in reps else cfg.rounds
-        out.append([row.generate(s.text, s.frames, cfg.seed * 1_000_003 + 101 * i + r)
+        out.append([generate(s.text, s.frames, cfg.seed * 1_000_003 + 101 * i + r)
                     for r in range(n)])
         if log and (i + 1) % 20 == 0:
             log(f"  {row.name}: generated for {i + 1}/{len(samples)} samples")
@@ -78,7 +81,9 @@ def evaluate_row(row: Row, samples, real_emb: np.ndarray, text_emb: np.ndarray, 
     if row.kind == "real":
         cands = [[s.joints] for s in samples]
     elif row.kind == "reconstruction":
-        cands = [[row.reconstruct(s.joints)] for s in samples]
+        reconstruct = row.reconstruct
+        assert reconstruct is not None            # load_row gives reconstruction rows one
+        cands = [[reconstruct(s.joints)] for s in samples]
     else:
         cands = _generate_all(row, samples, cfg, log)
     flat = [m for c in cands for m in c]
@@ -87,7 +92,7 @@ def evaluate_row(row: Row, samples, real_emb: np.ndarray, text_emb: np.ndarray, 
     start = np.cumsum([0] + [len(c) for c in cands])[:-1]
     groups = [emb[start[i]:start[i] + len(c)] for i, c in enumerate(cands) if len(c) >= 2]
 
-    per_repeat = {k: [] for k in TEXT_METRICS + PHYSICAL}
+    per_repeat: dict[str, list[float]] = {k: [] for k in TEXT_METRICS + PHYSICAL}
     for r in range(cfg.repeats):
         rng = np.random.default_rng([cfg.seed, r])
         if row.kind == "real":
@@ -122,10 +127,11 @@ def run_eval(rows=ROW_NAMES, cfg: EvalConfig = EvalConfig(), clips=None, evaluat
     samples = split_samples(clips, cfg.split)
     real_emb = evaluator.embed_motion([s.joints for s in samples])
     text_emb = evaluator.embed_text([s.text for s in samples])
-    report = {"config": asdict(cfg), "rows": {}, "skipped": {}, "edits": {},
-              "test_set": {"samples": len(samples), "texts": len({s.text for s in samples}),
-                           "clips": len({s.clip for s in samples}),
-                           "frames": int(sum(s.frames for s in samples))}}
+    report: dict[str, Any] = {
+        "config": asdict(cfg), "rows": {}, "skipped": {}, "edits": {},
+        "test_set": {"samples": len(samples), "texts": len({s.text for s in samples}),
+                     "clips": len({s.clip for s in samples}),
+                     "frames": int(sum(s.frames for s in samples))}}
     for name in rows:
         t = time.time()
         try:

@@ -57,7 +57,7 @@ def _locomotion(w: _Window) -> tuple[str, str] | None:
     shares = {g: w.share(g) for g in GAITS}
     if sum(shares.values()) < LOCOMOTION_SHARE:
         return None
-    gait = max(shares, key=shares.get)
+    gait = max(shares, key=shares.__getitem__)
     verb = "sneaks" if gait == "walking" and w.share("sneaking") >= 0.5 * shares[gait] else GAITS[gait]
     left, right = w.share("circling_left"), w.share("circling_right")
     if max(left, right) >= 0.5 and left != right:
@@ -225,7 +225,8 @@ def summarise(captions: list[Caption], max_body: int = 3, max_parts: int = 2) ->
     for c in captions:
         if c.part != "body" and _notable(c):
             frames[c.part, c.text] = frames.get((c.part, c.text), 0) + c.end - c.start
-    parts, used = [], set()
+    parts: list[str] = []
+    used: set[str] = set()
     for part, text in sorted(frames, key=lambda k: (any(m in k[1] for m in MINOR), -frames[k])):
         if part not in used and len(parts) < max_parts:      # one caption per part
             parts.append(text)

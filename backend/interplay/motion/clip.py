@@ -60,7 +60,9 @@ def save_clips(clips: list[Clip], out_dir: Path) -> None:
     out_dir.mkdir(parents=True, exist_ok=True)
     metas = []
     for source in sorted({c.source for c in clips}):
-        joints, offsets, start = [], [], 0
+        joints: list[np.ndarray] = []
+        offsets: list[np.ndarray] = []
+        start = 0
         for c in (c for c in clips if c.source == source):
             people = []
             for p, off in zip(c.people, c.offsets):

@@ -172,7 +172,7 @@ def key_joint_trajectory_error(pred: np.ndarray, target: np.ndarray,
 def person_metrics(joints: np.ndarray, fps: int = sk.FPS, cfg: MetricConfig = DEFAULT) -> dict:
     """Clip-level single-person metrics (plain floats)."""
     speed, contact = foot_skating(joints, fps, cfg)
-    skating = (contact & (speed > cfg.skate_speed)).any(axis=1)
+    skating = np.any(contact & (speed > cfg.skate_speed), axis=1)
     com_dist, com_angle = com_to_pelvis(joints)
     return {
         "bone_deviation": float(bone_deviation(joints).mean()),
@@ -196,7 +196,7 @@ def pair_geometry(a: np.ndarray, b: np.ndarray, cfg: MetricConfig = DEFAULT) -> 
     gaps = surface_gaps(sa, sb, dist)
     volume = lens_volume(dist, sa.radii[:, None], sb.radii[None, :]).sum(axis=(1, 2))
     hit = gaps < -cfg.overlap_depth
-    hit_a, hit_b = hit.any(axis=2), hit.any(axis=1)                      # (T, S) each
+    hit_a, hit_b = np.any(hit, axis=2), np.any(hit, axis=1)              # (T, S) each
     penetration = np.stack([(h[:, :, None] & SPHERE_PART_MASK[None]).any(axis=1)
                             for h in (hit_a, hit_b)], axis=1)
     hand_gap = np.stack([gaps[:, HAND_SPHERES, :].min(axis=2),
@@ -214,7 +214,7 @@ def clip_metrics(people: list[np.ndarray], fps: int = sk.FPS, cfg: MetricConfig 
     each = [person_metrics(p, fps, cfg) for p in people]
     out = {k: float(np.mean([m[k] for m in each])) for k in each[0]}
     if len(people) == 2:
-        g = pair_geometry(*people, cfg)
+        g = pair_geometry(people[0], people[1], cfg)
         out["intersection_volume"] = float(g["volume"].mean())
         out["intersection_frequency"] = float(g["overlap"].mean())
         out["contact_frames"] = int((g["hand_gap"] <= cfg.hand_contact).any(axis=(1, 2)).sum())
@@ -235,7 +235,7 @@ def frame_highlights(people: list[np.ndarray], cfg: MetricConfig = DEFAULT) -> d
             contacts[f].append([i, int(sk.FOOT_JOINTS[k])])
     min_distance = None
     if len(people) == 2:
-        g = pair_geometry(*people, cfg)
+        g = pair_geometry(people[0], people[1], cfg)
         wrists = (sk.LEFT_HAND, sk.RIGHT_HAND)
         for f, i, h in zip(*np.nonzero(g["hand_gap"] <= cfg.hand_contact)):
             contacts[f].append([int(i), wrists[h]])

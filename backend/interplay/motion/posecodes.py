@@ -198,8 +198,8 @@ def _posture(b: BodyFrame, codes: dict) -> None:
     rel, tilt = codes["pelvis_height"], b.tilt
     knee = {s: angle(b.joints[:, J[f"{s}_hip"]] - b.joints[:, J[f"{s}_knee"]],
                      b.joints[:, J[f"{s}_ankle"]] - b.joints[:, J[f"{s}_knee"]]) for s in SIDES}
-    for s in SIDES:
-        codes[f"{s}_knee_bent"] = knee[s] < KNEE_BENT_DEG
+    for side in SIDES:
+        codes[f"{side}_knee_bent"] = knee[side] < KNEE_BENT_DEG
     lying = (tilt > LIE_TILT_DEG) & (rel < LIE_HEIGHT)
     sitting = ~lying & (rel < SIT_HEIGHT)
     low = ~lying & ~sitting

@@ -10,7 +10,7 @@ import numpy as np
 _AXES = {"X": 0, "Y": 1, "Z": 2}
 
 
-def axis_rotation(axis: str, angle: np.ndarray) -> np.ndarray:
+def axis_rotation(axis: str, angle: np.ndarray | float) -> np.ndarray:
     """Rotation matrices (..., 3, 3) about one principal axis by angle (radians)."""
     angle = np.asarray(angle, dtype=np.float64)
     c, s = np.cos(angle), np.sin(angle)
@@ -129,6 +129,6 @@ def rotation_between(u: np.ndarray, v: np.ndarray) -> np.ndarray:
     return axis_angle_to_matrix(axis / np.maximum(s, 1e-12) * angle)
 
 
-def yaw_matrix(angle: np.ndarray) -> np.ndarray:
+def yaw_matrix(angle: np.ndarray | float) -> np.ndarray:
     """Rotations about +Y (up) by angle (radians)."""
     return axis_rotation("Y", angle)

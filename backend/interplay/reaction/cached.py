@@ -45,7 +45,9 @@ class CachedReactionSession(ReactionSession):
 
     def _call(self, k: int, x_k: np.ndarray, t: float, a_n: np.ndarray, pos: int) -> list:
         """One-frame graph at flow step k: x̂₁ (1, 66) and the new cache entries."""
-        out = self.model.step_session.run(OUTPUTS, {
+        step = self.model.step_session
+        assert step is not None                   # __init__ refuses weights without it
+        out = step.run(OUTPUTS, {
             "x_t": x_k[:, None].astype(np.float32), "t": np.array([t], np.float32),
             "actor": a_n[:, None].astype(np.float32), "text": self.text.astype(np.float32),
             "pos": np.array([pos], np.int64), "past_k": self.kv[k][0], "past_v": self.kv[k][1],

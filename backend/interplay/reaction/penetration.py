@@ -56,8 +56,8 @@ class ActorSpheres:
     gradient step: centres (T, S, 3), their transpose and squared norms, and the reach
     δ + r_s + r_a (T, S, S) of every sphere pair."""
 
-    def __init__(self, centres: np.ndarray, reactor_radii: np.ndarray, actor_radii: np.ndarray,
-                 safe: float):
+    def __init__(self, centres: np.ndarray, reactor_radii: np.ndarray | float,
+                 actor_radii: np.ndarray | float, safe: float):
         t = centres.shape[0]
         if centres.shape != (t, NUM_SPHERES, 3):
             raise ValueError(f"actor sphere centres must be (T, {NUM_SPHERES}, 3), "
@@ -104,8 +104,8 @@ def _loss(reactor: np.ndarray, a: ActorSpheres) -> tuple[float, np.ndarray]:
     return loss, MIX.T @ grad_c
 
 
-def guide(reactor: np.ndarray, actor_centres: np.ndarray, reactor_radii: np.ndarray,
-          actor_radii: np.ndarray, strength: float, safe: float = 0.02, iters: int = 1,
+def guide(reactor: np.ndarray, actor_centres: np.ndarray, reactor_radii: np.ndarray | float,
+          actor_radii: np.ndarray | float, strength: float, safe: float = 0.02, iters: int = 1,
           rigid: float = 0.0, spheres: ActorSpheres | None = None) -> np.ndarray:
     """The predicted clean reactor moved down the penetration gradient: `iters` steps of
     x ← x − (strength / iters)·(∇L + rigid·Σ_j ∇_j L), the second term the gradient with

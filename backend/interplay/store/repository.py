@@ -113,7 +113,7 @@ class MotionRepository:
         if not valid_id(motion_id):
             return False
         with Session(self.engine) as session:
-            return session.scalar(select(func.count()).where(MotionRow.id == motion_id)) > 0
+            return (session.scalar(select(func.count()).where(MotionRow.id == motion_id)) or 0) > 0
 
     def lineage(self, motion_id: str, limit: int = 1000) -> list[MotionSummary]:
         """The versions from the root to `motion_id` (following parent_id), oldest first;

@@ -94,7 +94,7 @@ class Curve:
         return pts, head
 
 
-def _rotate(xz: np.ndarray, angle: np.ndarray) -> np.ndarray:
+def _rotate(xz: np.ndarray, angle: np.ndarray | float) -> np.ndarray:
     """Turn ground vectors (..., 2) by heading angles (broadcast over ...): +Z towards +X."""
     c, s = np.cos(angle), np.sin(angle)
     x, z = xz[..., 0], xz[..., 1]

@@ -281,7 +281,8 @@ def make_curve(spec) -> np.ndarray:
     cw = bool(cw)
     size = _positive("size_m", s["size_m"]) if "size_m" in s else None
     distance = _positive("distance_m", s["distance_m"]) if "distance_m" in s else None
-    turns = _positive("turns", s["turns"]) if "turns" in s else DEFAULT_TURNS.get(shape)
+    # Only arc, circle and spiral read turns, and each of them has a default.
+    turns = _positive("turns", s["turns"]) if "turns" in s else DEFAULT_TURNS.get(shape, 1.0)
     forward = distance or (size if shape == "line" and size else DEFAULT_DISTANCE.get(shape, 4.0))
 
     if shape in ("line", "polyline") and "turn_at" in s and "waypoints" not in s:

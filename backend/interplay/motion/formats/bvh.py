@@ -50,7 +50,8 @@ class Bvh:
     @property
     def end_site_names(self) -> tuple[str, ...]:
         """End Sites are unnamed in BVH; we call each "<parent>_end" (a second one "_end2" …)."""
-        out, seen = [], {}
+        out: list[str] = []
+        seen: dict[int, int] = {}
         for parent, _ in self.end_sites:
             n = seen[parent] = seen.get(parent, 0) + 1
             out.append(f"{self.names[parent]}_end" + (str(n) if n > 1 else ""))
@@ -78,7 +79,9 @@ class Bvh:
             order = ""
             rcols = []
             for c, col in zip(chans, cols):
-                axis, kind = _CHANNEL.match(c).groups()
+                match = _CHANNEL.match(c)
+                assert match is not None                # parsing rejected any other channel
+                axis, kind = match.groups()
                 if kind.lower() == "position":
                     trans[:, j, "XYZ".index(axis.upper())] = self.motion[:, col]
                 else:
@@ -154,7 +157,11 @@ def _read_text(text_or_path: str | Path) -> str:
 
 
 def _parse_hierarchy(tokens: list[str]):
-    names, parents, offsets, channels, end_sites = [], [], [], [], []
+    names: list[str] = []
+    parents: list[int] = []
+    offsets: list[np.ndarray] = []
+    channels: list[tuple[str, ...]] = []
+    end_sites: list[list] = []             # [parent joint, offset]
     stack: list[tuple[str, int]] = []      # open blocks: ("joint", j) or ("end", e)
     pending: tuple[str, int] | None = None
     i = 0

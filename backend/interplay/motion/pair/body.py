@@ -43,7 +43,7 @@ metric and a guidance gradient need. Volumes are in m³.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import NamedTuple, overload
 
 import numpy as np
 
@@ -156,7 +156,12 @@ def surface_gaps(a: Spheres, b: Spheres, dist: np.ndarray | None = None) -> np.n
     return dist - reach
 
 
-def lens_volume(d: np.ndarray, r1: np.ndarray, r2: np.ndarray) -> np.ndarray:
+@overload
+def lens_volume(d: float, r1: float, r2: float) -> float: ...
+@overload
+def lens_volume(d: np.ndarray, r1: np.ndarray | float, r2: np.ndarray | float) -> np.ndarray: ...
+def lens_volume(d: np.ndarray | float, r1: np.ndarray | float,
+                r2: np.ndarray | float) -> np.ndarray | float:
     """Volume (m³) of the intersection of two spheres with radii r1, r2 whose centres are d
     apart (broadcast): 0 when apart, the smaller sphere when one holds the other, else the
     lens π (r1 + r2 - d)² (d² + 2d(r1 + r2) - 3(r1 - r2)²) / (12 d)."""

@@ -9,6 +9,7 @@ applied to both people: a right-hand handshake becomes a left-hand one.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
@@ -96,8 +97,8 @@ class PairWindows:
         return len(self.clip_ids)
 
 
-def pair_windows(clips, length: int, stride: int, roles: str = "both", mirror: bool = True,
-                 canonical: bool = True) -> PairWindows:
+def pair_windows(clips: Iterable[Clip], length: int, stride: int, roles: str = "both",
+                 mirror: bool = True, canonical: bool = True) -> PairWindows:
     """Training windows of `length` frames every `stride` frames from every two-person clip.
 
     roles: "both" adds each window with the people swapped (the follower as first person),
@@ -109,7 +110,6 @@ def pair_windows(clips, length: int, stride: int, roles: str = "both", mirror: b
         raise ValueError(f"roles must be 'both' or 'as_is', got {roles!r}")
     out, ids, starts, swapped, mirrored, synth = [], [], [], [], [], []
     for c in clips:
-        c: Clip
         if len(c.people) != 2 or c.frames < length:
             continue
         both = np.stack([np.asarray(p, dtype=np.float64) for p in c.people])   # (2, T, 22, 3)

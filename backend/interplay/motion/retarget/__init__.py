@@ -9,7 +9,7 @@ Canonicalisation (floor, facing, origin) is separate because a pair shares one t
 
 from __future__ import annotations
 
-from typing import Mapping, Sequence, Union
+from typing import Mapping, Sequence, Union, cast
 
 import numpy as np
 
@@ -31,7 +31,8 @@ def map_joints(named: Mapping[str, np.ndarray], joint_map: Mapping[str, JointSou
         if isinstance(src, str):
             out.append(named[src])
         else:
-            out.append(sum(w * named[s] for s, w in src))
+            # A weighted sum of (T, 3) arrays: src is never empty, so sum()'s start 0 never stays.
+            out.append(cast(np.ndarray, sum(w * named[s] for s, w in src)))
     return np.stack(out, axis=1)
 
 

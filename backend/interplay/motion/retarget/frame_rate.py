@@ -31,6 +31,8 @@ Evidence (all 58 cmu-bvh trials and 14 salsa pairs, numbers from `gait_stats`; r
 
 from __future__ import annotations
 
+from typing import TypedDict
+
 import numpy as np
 
 from interplay.motion import skeleton as sk
@@ -92,7 +94,15 @@ def flight_gravity(joints: np.ndarray, fps: float, clearance: float = 0.06, min_
     return float(-2.0 * curvature)
 
 
-def gait_stats(joints: np.ndarray, fps: float) -> dict[str, float | None]:
+class GaitStats(TypedDict):
+    cadence: float
+    speed: float
+    com_acceleration_p99: float
+    fastest_turn_s: float | None
+    flight_gravity: float | None
+
+
+def gait_stats(joints: np.ndarray, fps: float) -> GaitStats:
     """Cadence (weight changes/s), mean pelvis ground speed (m/s), 99th-percentile horizontal
     centre-of-mass acceleration (m/s², 0.2 s smoothing), fastest full turn (s, None if the
     body never turns 360°) and flight-phase gravity (m/s², None without flight)."""
@@ -118,7 +128,7 @@ def gait_stats(joints: np.ndarray, fps: float) -> dict[str, float | None]:
 
 
 def estimate_true_fps(joints: np.ndarray, candidates=CMU_RATES,
-                      prior: float | None = None) -> tuple[float, dict[float, dict]]:
+                      prior: float | None = None) -> tuple[float, dict[float, GaitStats]]:
     """The capture rate among `candidates` that makes the motion physical. A flight phase
     decides alone (the rate whose free fall lies in GRAVITY_RANGE); otherwise the `prior`
     (the header's rate) if the centre-of-mass acceleration stays under MAX_COM_ACCELERATION
@@ -142,7 +152,7 @@ def estimate_true_fps(joints: np.ndarray, candidates=CMU_RATES,
     return float(prior) if prior is not None else max(table), table
 
 
-def motion_defects(evidence: dict[float, dict]) -> list[str]:
+def motion_defects(evidence: dict[float, GaitStats]) -> list[str]:
     """Reasons a clip is unusable, from `estimate_true_fps`'s table; empty if none. A clip
     whose centre of mass accelerates implausibly at every CMU rate has a broken root track
     (07_12 and 09_10: the body is fine but hovers and slides; 23 and 54 m/s² at 120 fps,
