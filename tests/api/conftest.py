@@ -27,8 +27,7 @@ def fake_client(settings):
 @pytest.fixture(scope="session")
 def real_generator():
     from interplay.generators.router import load_generator
-    from interplay.settings import get_settings
-    return load_generator(get_settings().data_dir)   # models/data unless INTERPLAY_DATA_DIR
+    return load_generator()   # the settings' data and weights (models/ unless INTERPLAY_…)
 
 
 @pytest.fixture

@@ -275,8 +275,11 @@ def test_a_real_review_event_round_trips():
     from tests.helpers.synthetic_motion import fk_motion
 
     walk, _ = fk_motion(60, "walk")
-    seg = {"index": 2, "prompt": "a person walks forward", "base": "a person walks",
-           "start": 0, "end": 60, "edits": {"left_arm": "raises the left arm above the head"}}
+    from interplay.planner.schema import Segment
+
+    seg = Segment(index=2, prompt="a person walks forward", base="a person walks", start=0,
+                  end=60, seconds=3.0, persons=[0],
+                  edits={"left_arm": "raises the left arm above the head"})
     event = review(seg, [walk], encoder=_Encoder(), round=1).event()
     assert event["confirmed"] == {"left_arm": False} and event["instructions"]
     assert set(event) == {"type", *py_schema()["review"]}

@@ -6,8 +6,9 @@ from __future__ import annotations
 import numpy as np
 from fastapi.testclient import TestClient
 
+from interplay.generators.plan import GenerationPlan
 from interplay.motion.skeleton import FPS, rest_joints
-from interplay.planner.plan import plan_json
+from interplay.planner.plan import plan
 
 
 class FakeGenerator:
@@ -16,8 +17,9 @@ class FakeGenerator:
     def __init__(self, chunk: int = 20, fail_after: int | None = None):
         self.chunk, self.fail_after = chunk, fail_after
 
-    def plan(self, req) -> dict:
-        return plan_json(req.prompt, req.persons, req.seconds)
+    def plan(self, req) -> GenerationPlan:
+        return GenerationPlan.from_plan(plan(req.prompt, req.persons, req.seconds),
+                                        seed=req.seed or 0, generator="retrieval")
 
     def stream(self, req, plan):
         total = round(req.seconds * FPS)

@@ -26,7 +26,7 @@ ALLOWED: dict[str, set[str]] = {
     "planner": BASE | {"motion", "text"},
     "trajectory": BASE | {"motion", "planner"},
     "reaction": BASE | {"motion", "text"},
-    "review": BASE | {"motion", "text"},
+    "review": BASE | {"motion", "text", "planner"},
     "generators": BASE | {"motion", "text", "planner"},
     "pipeline": BASE | {"motion", "text", "store"} | STAGES,
     "api": BASE | {"interplay", "motion", "text", "store", "pipeline"} | STAGES,

@@ -129,7 +129,7 @@ def test_generator_uses_coda_for_two_people_and_falls_back_with_a_reason(tiny, t
     gen = CodaGenerator(coda)
     req = Request("two people hug, then they wave", persons=2, seconds=5, seed=9)
     plan = gen.plan(req)
-    assert plan["generator"] == "coda" and len(plan["segments"]) == 2
+    assert plan.generator == "coda" and len(plan.segments) == 2
     chunks = list(gen.stream(req, plan))
     assert sum(c[1][0].shape[0] for c in chunks) == 100
     assert all(len(people) == 2 and people[0].dtype == np.float32 for _, people in chunks)

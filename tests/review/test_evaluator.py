@@ -4,11 +4,11 @@ import numpy as np
 import pytest
 
 from interplay.motion.clip import default_clips
-from interplay.review.evaluator import Evaluator, chunks, load_evaluator
+from interplay.review.evaluator import EvaluatorRuntime, chunks, load_evaluator
 
 
 @pytest.fixture(scope="module")
-def ev() -> Evaluator:
+def ev() -> EvaluatorRuntime:
     return load_evaluator()
 
 
@@ -74,4 +74,4 @@ def test_bad_input_is_refused(ev, tmp_path):
     with pytest.raises(ValueError, match="features"):
         ev.embed_features([np.zeros((10, 5))])
     with pytest.raises(FileNotFoundError, match="motion_encoder.onnx"):
-        Evaluator.load(tmp_path)
+        EvaluatorRuntime.load(tmp_path)

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from interplay.motion.clip import default_clips
-from interplay.planner.plan import plan_json
+from interplay.planner.plan import plan
+from interplay.planner.schema import Segment
 from interplay.review.checks import commonsense
 from interplay.review.reviewer import CannotApply, correct, review
 
@@ -21,24 +22,24 @@ def _clip(clips, label: str, people: int = 1):
     return next(c for c in clips if c.label == label and len(c.people) == people)
 
 
-def _segment(prompt: str, frames: int, persons: int = 1) -> dict:
+def _segment(prompt: str, frames: int, persons: int = 1) -> Segment:
     """The planner's segment for a one-step prompt (the one with part edits if it split it),
     laid over `frames` frames."""
-    segs = plan_json(prompt, persons, frames / 20)["segments"]
-    seg = next((s for s in segs if any((s.get("edits") or {}).values())), segs[0])
-    return {**seg, "start": 0, "end": frames}
+    segs = plan(prompt, persons, frames / 20).segments
+    seg = next((s for s in segs if s.edits.named()), segs[0])
+    return seg.model_copy(update={"start": 0, "end": frames, "seconds": frames / 20})
 
 
 def test_walk_confirms_walking_and_asks_for_the_missing_arm_edit(clips):
     walk = _clip(clips, "walk").people[0][:80]
     seg = _segment("a person walks while raising the left arm above the head", 80)
-    assert seg["edits"]["left_arm"]
+    assert seg.edits.left_arm
     rv = review(seg, [walk])
     assert rv.score_kind == "caption_agreement" and -1 <= rv.score <= 1
     assert "walks" in rv.captions["body"] and rv.body_confirmed is True
     assert rv.confirmed == {"left_arm": False}
     assert rv.instructions[0] == {"kind": "edit_part", "part": "left_arm",
-                                  "prompt": seg["edits"]["left_arm"],
+                                  "prompt": seg.edits.left_arm,
                                   "reason": rv.instructions[0]["reason"]}
     assert rv.verdict == "correct"
     ev = rv.event()
@@ -115,4 +116,4 @@ def test_correction_loop_keeps_improvements_and_stops_when_worse(clips):
 
 def test_review_rejects_bad_joints():
     with pytest.raises(ValueError, match="22, 3"):
-        review({"index": 0, "prompt": "walk", "base": "walk"}, [np.zeros((10, 21, 3))])
+        review(_segment("a person walks", 10), [np.zeros((10, 21, 3))])

@@ -19,6 +19,7 @@ from interplay import __version__
 from interplay.api import stream
 from interplay.api.jobs import JobManager
 from interplay.api.routes import edits, jobs, motions, pages
+from interplay.generators.base import Generator
 from interplay.pipeline.requests import readable_errors
 from interplay.settings import Settings, get_settings
 from interplay.store import MotionRepository, make_engine
@@ -26,9 +27,9 @@ from interplay.store import MotionRepository, make_engine
 log = logging.getLogger(__name__)
 
 
-def _load_generator(settings: Settings):
+def _load_generator(settings: Settings) -> Generator:
     from interplay.generators.router import load_generator
-    return load_generator(settings.data_dir, settings.spam_dir, coda_dir=settings.coda_dir)
+    return load_generator(settings)
 
 
 def create_app(settings: Settings | None = None, generator=None) -> FastAPI:

@@ -8,6 +8,7 @@ from typing import Annotated
 from fastapi import Depends, HTTPException, Request
 
 from interplay.api.jobs import JobManager
+from interplay.generators.base import Generator
 from interplay.settings import Settings
 from interplay.store import MotionRepository
 
@@ -24,7 +25,7 @@ def job_manager(request: Request) -> JobManager:
     return request.app.state.jobs
 
 
-def generator(request: Request):
+def generator(request: Request) -> Generator:
     gen = getattr(request.app.state, "generator", None)
     if gen is None:
         reason = getattr(request.app.state, "generator_error", None) or "not loaded"
@@ -35,4 +36,4 @@ def generator(request: Request):
 SettingsDep = Annotated[Settings, Depends(app_settings)]
 RepoDep = Annotated[MotionRepository, Depends(repository)]
 JobsDep = Annotated[JobManager, Depends(job_manager)]
-GeneratorDep = Annotated[object, Depends(generator)]
+GeneratorDep = Annotated[Generator, Depends(generator)]

@@ -55,7 +55,7 @@ def run_model_bench(weights_dir: str | Path | None = None, runs: int = 10, warmu
     report = {"weights": str(weights_dir), "trained": placeholder_reason(weights_dir, "SPAM") is None,
               "load_s": round(load_s, 3), "cpus": os.cpu_count(),
               "threads": rt.graphs["base"].session.get_session_options().intra_op_num_threads,
-              "parallel_cfg": bool(getattr(rt, "pairs", None)),
+              "parallel_cfg": bool(rt.pairs),
               "load_avg_1m": round(os.getloadavg()[0], 2),   # other work on the shared CPUs
               "codes": rt.config.K, "layers": rt.config.Q, "steps": rt.config.steps,
               "generate": [], "targets_ms": TARGETS_MS}

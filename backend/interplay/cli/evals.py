@@ -6,6 +6,7 @@ import json
 import sys
 
 from interplay.cli.args import CliError
+from interplay.eval.rows import ROW_NAMES
 
 
 def _sampling_args(items: list[str] | None) -> list[tuple[str, object]]:
@@ -25,7 +26,6 @@ def _sampling_args(items: list[str] | None) -> list[tuple[str, object]]:
 
 def cmd_eval(args) -> int:
     from interplay.eval.report import EvalConfig, format_table, run_eval
-    from interplay.eval.rows import ROW_NAMES
     rows = [r.strip() for r in args.rows.split(",") if r.strip()] if args.rows else list(ROW_NAMES)
     unknown = [r for r in rows if r not in ROW_NAMES]
     if unknown or not rows:
@@ -77,7 +77,7 @@ def cmd_review_eval(args) -> int:
     if args.limit is not None and args.limit < 1:
         raise CliError("--limit must be at least 1")
     settings = get_settings()
-    generator = load_generator(settings.data_dir, settings.spam_dir, coda_dir=settings.coda_dir)
+    generator = load_generator(settings)
     prompts = table8_prompts()[:args.limit]
     report = run(generator, prompts, seconds=args.seconds, rounds=args.rounds,
                  log=lambda m: print(m, file=sys.stderr))
@@ -90,8 +90,8 @@ def register(sub) -> None:
                        "generator on the test split, with 95%% confidence intervals")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--repeats", type=int, default=10, help="repeats for the CIs (default 10)")
-    p.add_argument("--rows", help="comma-separated: real,retrieval,spam,spam_fp32,spam_nocs,"
-                   "spam_vq,single_vq (default all; rows without weights are skipped)")
+    p.add_argument("--rows", help="comma-separated: " + ",".join(ROW_NAMES) + " (default all; "
+                   "rows without weights are skipped)")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--split", choices=("test", "val"), default="test",
                    help="val: choose settings there (its own edit cases), never on test")

@@ -18,7 +18,6 @@ def cmd_generate(args) -> int:
     from interplay.motion.metrics import clip_metrics
     from interplay.pipeline.motion_json import plain
     from interplay.pipeline.requests import GenerationRequest, readable_errors
-    from interplay.settings import get_settings
     try:
         body = GenerationRequest(prompt=args.prompt, persons=args.persons, seconds=args.seconds,
                          seed=args.seed)
@@ -29,8 +28,7 @@ def cmd_generate(args) -> int:
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
-    generator = load_generator(get_settings().data_dir, get_settings().spam_dir,
-                               coda_dir=get_settings().coda_dir)
+    generator = load_generator()
     motion = generator.generate(Request(prompt, body.persons, body.seconds, seed))
     if not motion.metrics:
         motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
@@ -74,7 +72,6 @@ def cmd_edit(args) -> int:
     from interplay.motion.motion import Motion
     from interplay.pipeline.editing import edit_joints, follow_path
     from interplay.pipeline.motion_json import plain
-    from interplay.settings import get_settings
     motion = read_motion(args.motion)
     if args.prompt is None and args.trajectory is None:
         raise CliError("give --prompt, --trajectory or both")
@@ -87,9 +84,7 @@ def cmd_edit(args) -> int:
     try:
         if args.prompt is not None:
             resolve_edit_part(args.part)
-            settings = get_settings()
-            generator = load_generator(settings.data_dir, settings.spam_dir,
-                                       coda_dir=settings.coda_dir)
+            generator = load_generator()
             joints, plan, _, seed = edit_joints(
                 generator, motion.people, motion.plan, motion.prompt, args.part, args.prompt,
                 args.frames, args.seed)

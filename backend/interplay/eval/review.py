@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from interplay.eval.data import TABLE8
+from interplay.generators.base import Editor
 from interplay.pipeline.orchestrator import OrchestratorConfig, default_evaluator, orchestrate
 
 METRICS = ("bone_deviation", "com_lean", "skating_ratio", "foot_skating", "ground_penetration",
@@ -52,7 +53,7 @@ def run(generator, prompts: list[dict], seconds: float = 8.0, rounds: int = 2,
         last = [s["reviews"][-1] for s in segs]
         corr = [c for s in segs for c in s["corrections"]]
         rows.append({"id": item["id"], "prompt": item["prompt"], "segments": len(segs),
-                     "generator": out.plan.get("generator"),
+                     "generator": out.plan.generator,
                      "before": _side(first), "after": _side(last),
                      "instructions": [i["kind"] for r in first for i in r["instructions"]],
                      "applied": sum(c["score_after"] is not None for c in corr),
@@ -61,7 +62,7 @@ def run(generator, prompts: list[dict], seconds: float = 8.0, rounds: int = 2,
         log(f"{item['id']:>2} {before:.3f} → {after:.3f}  {item['prompt'][:60]}")
     return {"prompts": len(rows), "seconds": seconds, "rounds": rounds,
             "generator": sorted({r["generator"] for r in rows}),
-            "generator_reason": getattr(generator, "reason", None),
+            "generator_reason": generator.reason if isinstance(generator, Editor) else None,
             "score_kind": "evaluator" if evaluator is not None else "caption_agreement",
             "elapsed_s": round(time.monotonic() - t0, 1),
             "table": table(rows), "rows": rows}

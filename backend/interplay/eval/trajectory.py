@@ -2,7 +2,7 @@
 the curve's end, how well the facing follows the curve's tangent, and foot skating before and
 after (metrics.foot_skating: mean horizontal speed of planted foot joints, m/s).
 
-    python -m interplay.trajectory.apply [--json] [--keep-size] [--data DIR]
+    python -m interplay.eval.trajectory [--json] [--keep-size] [--data DIR]
 
 The walks are the processed set's test-split clips prompted "a person walks forward".
 """
@@ -169,7 +169,7 @@ def markdown(rows: list[dict]) -> str:
 
 
 def main(argv: list[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(prog="python -m interplay.trajectory.apply",
+    parser = argparse.ArgumentParser(prog="python -m interplay.eval.trajectory",
                                      description=__doc__.split("\n\n")[0])
     parser.add_argument("--json", action="store_true", help="print the rows as JSON")
     parser.add_argument("--data", default=str(DATA_DIR), help="processed data directory")
@@ -179,3 +179,7 @@ def main(argv: list[str] | None = None) -> None:
     cfg = replace(DEFAULT, scale_to_motion=not args.keep_size)
     rows = shape_table(walk_clips(args.data), cfg=cfg)
     print(json.dumps(rows, indent=1) if args.json else markdown(rows))
+
+
+if __name__ == "__main__":
+    main()

@@ -18,6 +18,7 @@ from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 
+from interplay.generators.plan import GenerationPlan
 from interplay.motion.metrics import clip_metrics, frame_highlights
 from interplay.motion.motion import Motion
 from interplay.motion.skeleton import FPS
@@ -49,9 +50,10 @@ class Generator(Protocol):
     """Plans a request, then streams (start frame, one (n, 22, 3) chunk per person) in order,
     covering every frame of the plan."""
 
-    def plan(self, req: Request) -> dict: ...
+    def plan(self, req: Request) -> GenerationPlan: ...
 
-    def stream(self, req: Request, plan: dict) -> Iterator[tuple[int, list[np.ndarray]]]: ...
+    def stream(self, req: Request, plan: GenerationPlan
+               ) -> Iterator[tuple[int, list[np.ndarray]]]: ...
 
 
 class EditUnavailable(RuntimeError):
@@ -60,11 +62,24 @@ class EditUnavailable(RuntimeError):
 
 @runtime_checkable
 class Editor(Protocol):
-    """A generator that can re-generate a body part (or frames) of one person's motion."""
+    """A generator that can re-generate a body part (or frames) of one person's motion, when
+    `can_edit` (its model is loaded; else `reason` says why not)."""
+
+    reason: str | None
+
+    @property
+    def can_edit(self) -> bool: ...
 
     def edit(self, joints: np.ndarray, part: str | None, prompt: str,
              frames: tuple[int, int] | None = None, seed: int | None = None,
              context: str | None = None) -> tuple[Any, dict]: ...
+
+
+@runtime_checkable
+class Redrawer(Protocol):
+    """A generator whose retrieval segments can be drawn again with another seed."""
+
+    def redraw(self, plan: GenerationPlan, index: int, seed: int) -> GenerationPlan: ...
 
 
 def generate_motion(gen: Generator, req: Request) -> Motion:
@@ -72,5 +87,5 @@ def generate_motion(gen: Generator, req: Request) -> Motion:
     plan = gen.plan(req)
     chunks = [people for _, people in gen.stream(req, plan)]
     people = [np.concatenate([c[i] for c in chunks]) for i in range(req.persons)]
-    return Motion(people=people, fps=FPS, plan=plan, metrics=clip_metrics(people, fps=FPS),
-                  highlights=frame_highlights(people), prompt=req.prompt, seed=plan["seed"])
+    return Motion(people=people, fps=FPS, plan=plan.to_json(), metrics=clip_metrics(people, fps=FPS),
+                  highlights=frame_highlights(people), prompt=req.prompt, seed=plan.seed)

@@ -25,6 +25,7 @@ from interplay.generators.base import EditUnavailable, Request, generate_motion
 from interplay.generators.coda.files import DEFAULT_DIR as CODA_DIR
 from interplay.generators.coda.generator import CodaGenerator
 from interplay.generators.coda.runtime import CodaRuntime
+from interplay.generators.plan import GenerationPlan
 from interplay.generators.retrieval.generator import RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.spam.generator import SpamGenerator
@@ -33,6 +34,7 @@ from interplay.generators.spam.runtime import Edit, SpamRuntime
 from interplay.generators.weights import placeholder_reason
 from interplay.motion.clip import DATA_DIR, default_clips
 from interplay.motion.motion import Motion
+from interplay.settings import Settings, get_settings
 
 log = logging.getLogger(__name__)
 ONE_PERSON_ONLY = "SPAM generates one person; two people use retrieval"
@@ -55,10 +57,9 @@ class Router:
     def can_edit(self) -> bool:
         return self._spam is not None
 
-    def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator,
-                 after: list[dict] | None = None) -> dict:
-        """Retrieval's captures for one segment (the reviewer's re-draws use it)."""
-        return self.retrieval.retrieve(prompt, frames, persons, rng, after)
+    def redraw(self, plan: GenerationPlan, index: int, seed: int) -> GenerationPlan:
+        """`plan` with retrieval segment `index` drawn again (the reviewer's re-draws)."""
+        return self.retrieval.redraw(plan, index, seed)
 
     def _fallback_reason(self, req: Request) -> str | None:
         if req.persons == 1:
@@ -67,7 +68,7 @@ class Router:
             return self.coda_reason
         return self.reason if self._spam is None else ONE_PERSON_ONLY
 
-    def plan(self, req: Request) -> dict:
+    def plan(self, req: Request) -> GenerationPlan:
         if req.persons == 1 and self._spam is not None:
             return self._spam.plan(req)
         if req.persons == 2 and self._coda is not None:
@@ -75,11 +76,11 @@ class Router:
         plan = self.retrieval.plan(req)
         reason = self._fallback_reason(req)
         if reason is not None:
-            plan["generator_reason"] = reason
+            plan.generator_reason = reason
         return plan
 
-    def stream(self, req: Request, plan: dict) -> Iterator[tuple[int, list[np.ndarray]]]:
-        kind = plan.get("generator")
+    def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
+        kind = plan.generator
         if kind == "spam":
             if self._spam is None:
                 raise ValueError(f"this plan needs SPAM, which is not loaded: {self.reason}")
@@ -157,9 +158,17 @@ def _load(data_dir: str, spam_dir: str | None, use_spam: bool, coda_dir: str | N
     return with_models(index, spam_dir, coda_dir)
 
 
-def load_generator(data_dir=None, spam_dir=None, use_spam: bool = True, coda_dir=None) -> Router:
-    """The router over the processed data set (models/data by default), built once: SPAM
-    (models/weights/spam) for one person and CODA (models/weights/coda) for two when their
-    weights load, else retrieval; use_spam=False gives retrieval alone."""
+def build_generator(data_dir: str | Path | None = None, spam_dir: str | Path | None = None,
+                    coda_dir: str | Path | None = None, use_spam: bool = True) -> Router:
+    """The router over the processed data set (models/data by default), built once per
+    arguments: SPAM (models/weights/spam) for one person and CODA (models/weights/coda) for
+    two when their weights load, else retrieval; use_spam=False gives retrieval alone."""
     return _load(str(data_dir or DATA_DIR), str(spam_dir) if spam_dir else None, use_spam,
                  str(coda_dir) if coda_dir else None)
+
+
+def load_generator(settings: Settings | None = None, use_spam: bool = True) -> Router:
+    """The generator the settings name (data, SPAM and CODA folders; the environment's when
+    None): what the server, the CLI and the measurements load."""
+    s = settings or get_settings()
+    return build_generator(s.data_dir, s.spam_dir, s.coda_dir, use_spam)

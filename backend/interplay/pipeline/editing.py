@@ -30,7 +30,7 @@ def edit_joints(generator, people: list[np.ndarray], plan: dict | None, prompt: 
     if not isinstance(generator, Editor):
         raise EditUnavailable("this generator cannot edit motions")
     edit, entry = generator.edit(joints, part, edit_prompt,
-                                 tuple(frames) if frames is not None else None, seed,
+                                 (frames[0], frames[1]) if frames is not None else None, seed,
                                  context=prompt or None)
     out = edit.joints.astype(np.float32)
     plan = dict(plan or {})
@@ -43,7 +43,7 @@ def follow_path(people: list[np.ndarray], trajectory: dict) -> list[np.ndarray]:
     """`people` with person `trajectory["person"]` walking the drawn points (world, metres) or
     the preset shape (placed at the person's start, facing as they do)."""
     from interplay.pipeline.orchestrator import DRAWN_PATH
-    from interplay.trajectory.apply import TrajectoryConfig, apply_trajectory
+    from interplay.trajectory.apply import apply_trajectory
     person = int(trajectory.get("person", 0))
     if not 0 <= person < len(people):
         raise ValueError(f"trajectory person {person} does not exist: this motion has "
@@ -51,7 +51,7 @@ def follow_path(people: list[np.ndarray], trajectory: dict) -> list[np.ndarray]:
     joints = np.asarray(people[person], dtype=np.float64)
     if trajectory.get("points") is not None:
         moved = apply_trajectory(joints, np.asarray(trajectory["points"], dtype=np.float64),
-                                 cfg=TrajectoryConfig(**DRAWN_PATH))
+                                 cfg=DRAWN_PATH)
     else:
         moved = apply_trajectory(joints, {k: v for k, v in trajectory.items() if k != "person"})
     out = [np.asarray(p, dtype=np.float32) for p in people]

@@ -1,5 +1,6 @@
-"""One generation job as CoMA's Algorithm 1: plan → per segment generate (SPAM for one person,
-retrieval as fallback and for two; SPAM conditions each part on the plan's part edits) →
+"""One generation job as CoMA's Algorithm 1: plan → per segment generate (the router's choice:
+SPAM for one person, CODA for two, retrieval as fallback; SPAM conditions each part on the
+plan's part edits) →
 review rounds (reviewer.correct: part edits, in-betweens, re-draws) → trajectories (the plan's
 per segment, or the request's drawn path / preset for one person) → the blended whole →
 the caller's metrics and store.
@@ -21,17 +22,20 @@ from typing import Callable
 
 import numpy as np
 
+from interplay.generators.base import Editor, Generator, Request
+from interplay.generators.plan import GenerationPlan, GenerationSegment
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
 from interplay.pipeline.segment_source import Cancelled, SegmentSource
 from interplay.review.reviewer import CannotApply, correct
+from interplay.trajectory.apply import TrajectoryConfig
 
 log = logging.getLogger(__name__)
 CHUNK = 40
 # A path drawn on the studio floor: world coordinates, its own size; the walk is retimed to
 # cover it, so the person ends where the path ends.
-DRAWN_PATH = {"anchor": "world", "scale_to_motion": False, "retime": True}
+DRAWN_PATH = TrajectoryConfig(anchor="world", scale_to_motion=False, retime=True)
 __all__ = ["orchestrate", "OrchestratorConfig", "Outcome", "StageError", "Cancelled"]
 
 
@@ -54,7 +58,7 @@ class StageError(RuntimeError):
 @dataclass
 class Outcome:
     people: list                       # float32 (T, 22, 3) per person
-    plan: dict
+    plan: GenerationPlan
     review: dict = field(default_factory=dict)
 
 
@@ -85,55 +89,55 @@ def _realign(joints: np.ndarray, old: np.ndarray, b: int) -> np.ndarray:
     return out
 
 
-def _trajectories(people: np.ndarray, plan: dict, trajectory: dict | None) -> int | None:
+def _trajectories(people: np.ndarray, plan: GenerationPlan, trajectory: dict | None) -> int | None:
     """Apply the plan's segment trajectories (or the request's path for its person) in place;
     the first frame that moved, or None."""
-    from interplay.trajectory.apply import TrajectoryConfig, apply_trajectory
+    from interplay.trajectory.apply import apply_trajectory
     first = None
     for p in range(people.shape[0]):
         if trajectory is not None and int(trajectory.get("person", 0)) == p:
             if "points" in trajectory and trajectory["points"] is not None:
                 moved = apply_trajectory(people[p], np.asarray(trajectory["points"], float),
-                                         cfg=TrajectoryConfig(**DRAWN_PATH))
+                                         cfg=DRAWN_PATH)
             else:
                 moved = apply_trajectory(people[p], {k: v for k, v in trajectory.items()
                                                      if k not in ("person", "points")})
             people[p] = moved
             first = 0
             continue
-        for seg in plan["segments"]:
-            if not seg.get("trajectory") or p not in seg.get("persons", [p]):
+        for seg in plan.segments:
+            if seg.trajectory is None or p not in seg.persons:
                 continue
-            a, b = int(seg["start"]), int(seg["end"])
+            a, b = seg.start, seg.end
             old = people[p].copy()
-            people[p, a:b] = apply_trajectory(old[a:b], seg["trajectory"])
+            people[p, a:b] = apply_trajectory(old[a:b], seg.trajectory.model_dump(mode="json"))
             people[p] = _realign(people[p], old, b)
             first = a if first is None else min(first, a)
     return first
 
 
-def orchestrate(generator, req, emit: Callable[[dict], None],
+def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None],
                 on_frames: Callable[[int, list[np.ndarray]], None],
                 cancelled: Callable[[], bool] = lambda: False, trajectory: dict | None = None,
                 evaluator=None, cfg: OrchestratorConfig = DEFAULT) -> Outcome:
     stage = "plan"
     try:
         plan = generator.plan(req)
-        emit({"type": "plan", "plan": plan})
+        emit({"type": "plan", "plan": plan.to_json()})
         stage = "generate"
         source = SegmentSource(generator, req, plan)
-        kind = plan.get("generator", "retrieval")
-        spam = kind == "spam" and getattr(generator, "spam", None) is not None
+        kind = plan.generator
+        spam = kind == "spam" and isinstance(generator, Editor) and generator.can_edit
         history = []
-        for seg in plan["segments"]:
-            i, a, b = int(seg["index"]), int(seg["start"]), int(seg["end"])
+        for seg in plan.segments:
+            i, a, b = seg.index, seg.start, seg.end
             emit({"type": "segment", "index": i, "status": "generating", "generator": kind})
             stage = "generate"
             source.fill(b, on_frames, cancelled)
             if cfg.review and cfg.rounds > 0 and b - a >= 3:
                 stage = "review"
                 history.append(_review_segment(generator, source, seg, spam, evaluator, cfg,
-                                               emit, on_frames, int(plan.get("seed") or 0)))
+                                               emit, on_frames, plan.seed))
             if cancelled():
                 raise Cancelled()
             emit({"type": "segment", "index": i, "status": "done", "generator": kind})
@@ -145,7 +149,8 @@ def orchestrate(generator, req, emit: Callable[[dict], None],
                 on_frames(s, [p[s:s + CHUNK] for p in people])
         plan = source.plan
         if trajectory is not None:
-            plan = {**plan, "trajectory": trajectory}
+            plan = plan.model_copy()
+            plan.trajectory = trajectory
         review = {"rounds": cfg.rounds, "tolerance": cfg.tolerance,
                   "score_kind": "evaluator" if evaluator is not None else "caption_agreement",
                   "segments": history}
@@ -157,15 +162,16 @@ def orchestrate(generator, req, emit: Callable[[dict], None],
         raise StageError(stage, f"{type(exc).__name__}: {exc}") from exc
 
 
-def _review_segment(generator, source: SegmentSource, seg: dict, spam: bool, evaluator,
+def _review_segment(generator: Generator, source: SegmentSource, seg: GenerationSegment,
+                    spam: bool, evaluator,
                     cfg: OrchestratorConfig, emit, on_frames, seed: int) -> dict:
     """Review rounds on one segment; corrected frames go back into `source` and out again."""
-    i, a, b = int(seg["index"]), int(seg["start"]), int(seg["end"])
+    i, a, b = seg.index, seg.start, seg.end
     calls: list = []          # per applied instruction: the re-drawn source (or None)
 
     def apply(instr: dict, people: list[np.ndarray], s: int) -> list[np.ndarray]:
         kind = instr["kind"]
-        if kind in ("regenerate", "edit_part") and not spam and seg.get("retrieval") is not None:
+        if kind in ("regenerate", "edit_part") and not spam and seg.retrieval is not None:
             # Retrieval cannot edit a part: it re-draws the segment's captures instead, and the
             # reviewer keeps the new draw only if it is better.
             if kind == "edit_part":
@@ -173,16 +179,17 @@ def _review_segment(generator, source: SegmentSource, seg: dict, spam: bool, eva
             other, frames = source.redraw(i, s)
             calls.append(other)
             return frames
-        if not spam or source.persons != 1:
+        if not spam or source.persons != 1 or not isinstance(generator, Editor):
+            why = generator.reason if isinstance(generator, Editor) else None
             raise CannotApply(f"{kind} needs the SPAM model for one person "
-                              f"({getattr(generator, 'reason', None) or 'not loaded'})")
+                              f"({why or 'not loaded'})")
         full = source.people[0, :source.written].copy()
         full[a:b] = people[0]
-        frames = (a, b)
+        span = (a, b)
         if kind == "inbetween":
-            frames = (a + int(instr["frames"][0]), a + int(instr["frames"][1]))
+            span = (a + int(instr["frames"][0]), a + int(instr["frames"][1]))
         part = instr.get("part") if kind == "edit_part" else None
-        edit, _ = generator.edit(full, part, instr["prompt"], frames, s, context=seg["prompt"])
+        edit, _ = generator.edit(full, part, instr["prompt"], span, s, context=seg.prompt)
         calls.append(None)
         return [np.asarray(edit.joints, dtype=np.float64)[a:b]]
 

@@ -8,11 +8,12 @@ review is done; chunks that straddle a segment end (SPAM pieces) are kept for th
 
 from __future__ import annotations
 
-import copy
-from typing import Callable, Iterator
+from collections.abc import Callable, Iterator
 
 import numpy as np
 
+from interplay.generators.base import Generator, Redrawer, Request
+from interplay.generators.plan import GenerationPlan
 from interplay.motion.skeleton import NUM_JOINTS
 
 
@@ -21,10 +22,10 @@ class Cancelled(Exception):
 
 
 class SegmentSource:
-    def __init__(self, generator, req, plan: dict):
+    def __init__(self, generator: Generator, req: Request, plan: GenerationPlan):
         self.generator, self.req, self.plan = generator, req, plan
-        self.persons = int(plan.get("persons", req.persons))
-        self.total = sum(int(s["end"]) - int(s["start"]) for s in plan["segments"])
+        self.persons = plan.persons
+        self.total = sum(s.end - s.start for s in plan.segments)
         self.people = np.zeros((self.persons, self.total, NUM_JOINTS, 3), dtype=np.float64)
         self.written = 0
         self._stream: Iterator = generator.stream(req, plan)
@@ -57,26 +58,16 @@ class SegmentSource:
             self.written = max(self.written, stop)
             on_chunk(start, chunk)
 
-    def redraw(self, index: int, seed: int) -> tuple["SegmentSource", list[np.ndarray]]:
+    def redraw(self, index: int, seed: int) -> tuple[SegmentSource, list[np.ndarray]]:
         """A new source whose plan re-draws retrieval segment `index` with `seed`, pulled up to
         that segment's end, and the segment's new frames per person. Earlier segments come out
         the same (the stitcher is deterministic)."""
-        from interplay.generators.retrieval.generator import _rng
-        seg = self.plan["segments"][index]
-        plan = copy.deepcopy(self.plan)
-        prev = plan["segments"][index - 1]["retrieval"]["tracks"] if index > 0 else None
-        plan["segments"][index]["retrieval"] = self.generator.retrieve(
-            seg["prompt"], int(seg["end"]) - int(seg["start"]), self.persons, _rng(seed, index),
-            [t[-1] for t in prev] if prev else None)
-        clips = {p["clip"] for s in plan["segments"] for t in s["retrieval"]["tracks"] for p in t}
-        index = self.generator.index
-        plan["sources"] = [{"clip": c, "licence": index.clip(c).licence,
-                            "label": index.clip(c).label} for c in sorted(clips)]
-        plan["synthetic"] = any(s["retrieval"]["synthetic"] for s in plan["segments"])
-        other = SegmentSource(self.generator, self.req, plan)
-        other.fill(int(seg["end"]), lambda *_: None)
-        a, b = int(seg["start"]), int(seg["end"])
-        return other, [other.people[p, a:b].copy() for p in range(self.persons)]
+        if not isinstance(self.generator, Redrawer):
+            raise TypeError(f"{type(self.generator).__name__} cannot re-draw a segment")
+        seg = self.plan.segments[index]
+        other = SegmentSource(self.generator, self.req, self.generator.redraw(self.plan, index, seed))
+        other.fill(seg.end, lambda *_: None)
+        return other, [other.people[p, seg.start:seg.end].copy() for p in range(self.persons)]
 
     def adopt(self, other: "SegmentSource", upto: int) -> None:
         """Continue from `other`'s stream (a re-drawn plan), keeping our frames after `upto`

@@ -125,9 +125,10 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
             failed["penetration"] = (f"the two bodies intersect in "
                                      f"{m['intersection_frequency']:.0%} of the frames "
                                      f"({m['intersection_volume']:.0f} cm³ a frame)")
-        windows += _windows(mt.pair_geometry(*people)["overlap"], "body intersection", t)
+        windows += _windows(mt.pair_geometry(people[0], people[1])["overlap"], "body intersection", t)
     if len(people) == 2 and wants_contact(text) and m["contact_frames"] == 0:
-        failed["missing_contact"] = (f"'{CONTACT_VERBS.search(text).group(0)}' needs a touch, "
+        verb = CONTACT_VERBS.search(text)       # wants_contact(text) matched it
+        failed["missing_contact"] = (f"'{verb.group(0) if verb else text}' needs a touch, "
                                      "but the hands never reach the other person")
     return Checks(metrics=m, failed=failed, windows=_merge(windows))
 

@@ -7,7 +7,7 @@ Files (written by `python -m models.evaluator.export` into models/weights/evalua
   normalizer.npz       feature mean/std of the training split (interplay.motion.features.Normalizer)
   config.json          max_frames, patch, embed_dim, …
 
-    ev = Evaluator.load()
+    ev = EvaluatorRuntime.load()
     m = ev.embed_motion([joints])           # (1, 256) unit rows
     t = ev.embed_text(["a person walks"])   # (1, 256)
     ev.score(joints, "a person walks")      # cosine in [-1, 1]
@@ -22,6 +22,7 @@ import json
 import math
 from functools import lru_cache
 from pathlib import Path
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 
@@ -71,8 +72,16 @@ def _unit(x: np.ndarray) -> np.ndarray:
     return (x / np.maximum(np.linalg.norm(x, axis=-1, keepdims=True), 1e-12)).astype(np.float32)
 
 
-class Evaluator:
-    def __init__(self, session, text_proj: dict[str, np.ndarray], normalizer: Normalizer,
+@runtime_checkable
+class Evaluator(Protocol):
+    """What the reviewer asks of a text–motion evaluator: how well joints (T, 22, 3) match a
+    text, higher is better."""
+
+    def score(self, joints: np.ndarray, text: str) -> float: ...
+
+
+class EvaluatorRuntime:
+    def __init__(self, session, text_proj: dict[str, np.ndarray], normalizer: Normalizer | None,
                  config: dict, text_encoder=None):
         self.session = session
         self.text_proj = {k: np.asarray(v, dtype=np.float32) for k, v in text_proj.items()}
@@ -84,7 +93,7 @@ class Evaluator:
         self._text_encoder = text_encoder
 
     @classmethod
-    def load(cls, directory: str | Path = DEFAULT_DIR, threads: int = 1) -> "Evaluator":
+    def load(cls, directory: str | Path = DEFAULT_DIR, threads: int = 1) -> "EvaluatorRuntime":
         d = Path(directory)
         session, proj, config = open_weights(d, "evaluator", "models.evaluator", threads)
         return cls(session, proj, Normalizer.load(d / "normalizer.npz"), config)
@@ -92,6 +101,8 @@ class Evaluator:
     # -- motion ------------------------------------------------------------------------------
     def embed_features(self, features: list[np.ndarray]) -> np.ndarray:
         """Unit embeddings (N, dim) of raw (not normalised) feature arrays (T_i, 239)."""
+        if self.normalizer is None:
+            raise TypeError(f"{type(self).__name__} does not embed single-person features")
         pieces, owner = [], []                      # chunks of ≤ max_frames and whose they are
         for i, f in enumerate(features):
             f = np.asarray(f, dtype=np.float32)
@@ -144,10 +155,10 @@ class Evaluator:
 
 
 @lru_cache(maxsize=2)
-def _load(directory: str) -> Evaluator:
-    return Evaluator.load(directory)
+def _load(directory: str) -> EvaluatorRuntime:
+    return EvaluatorRuntime.load(directory)
 
 
-def load_evaluator(directory: str | Path | None = None) -> Evaluator:
+def load_evaluator(directory: str | Path | None = None) -> EvaluatorRuntime:
     """The evaluator from models/weights/evaluator (or `directory`), loaded once per process."""
     return _load(str(directory or DEFAULT_DIR))

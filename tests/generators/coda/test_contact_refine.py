@@ -132,9 +132,9 @@ def test_the_product_refines_contact_segments_and_reports_them(rt):
     plan = gen.plan(req)
     chunks = list(gen.stream(req, plan))
     frames = sum(c[0].shape[0] for _, c in chunks)
-    assert frames == plan["segments"][-1]["end"]
+    assert frames == plan.segments[-1].end
     assert [s for s, _ in chunks] == sorted(s for s, _ in chunks)
-    shake, wave = plan["segments"]
+    shake, wave = plan.to_json()["segments"]
     assert shake["contact"]["kind"] == "handshake" and shake["contact"]["applied"], shake["contact"]
     assert "contact" not in wave
     people = np.concatenate([np.stack(c) for _, c in chunks], axis=1)

@@ -7,13 +7,13 @@ import pytest
 from interplay.generators.base import Request
 from interplay.generators.retrieval.generator import CHUNK
 from interplay.generators.retrieval.stitch import heading
-from interplay.generators.router import load_generator
+from interplay.generators.router import build_generator
 from interplay.motion import skeleton as sk
 
 
 @pytest.fixture(scope="module")
 def gen(stand_in_dir):
-    return load_generator(stand_in_dir, use_spam=False)   # retrieval, not SPAM
+    return build_generator(stand_in_dir, use_spam=False)   # retrieval, not SPAM
 
 
 def test_prefers_train_clips_and_chains_to_the_requested_length(gen):
@@ -28,10 +28,10 @@ def test_same_seed_same_motion_other_seed_other_choice(gen):
     a, b = gen.generate(req), gen.generate(req)
     np.testing.assert_array_equal(a.people[0], b.people[0])
     assert a.plan == b.plan and a.seed == 11
-    plans = {str(gen.plan(Request("a person walks forward", 1, 5.0, seed=s))["segments"][0]["retrieval"])
+    plans = {str(gen.plan(Request("a person walks forward", 1, 5.0, seed=s)).segments[0].retrieval)
              for s in range(6)}
     assert len(plans) > 1
-    assert gen.plan(Request("a person walks", 1, 2.0)).get("seed") is not None
+    assert gen.plan(Request("a person walks", 1, 2.0)).seed is not None
 
 
 def test_stream_chunks_cover_every_frame_in_order(gen):
@@ -42,7 +42,7 @@ def test_stream_chunks_cover_every_frame_in_order(gen):
     sizes = [len(people[0]) for _, people in chunks]
     assert starts[0] == 0 and all(s1 == s0 + n for s0, s1, n in zip(starts, starts[1:], sizes))
     assert sum(sizes) == 146 and max(sizes) <= CHUNK
-    seg_starts = {s["start"] for s in plan["segments"]}
+    seg_starts = {s.start for s in plan.segments}
     assert seg_starts <= set(starts)                          # chunks never straddle segments
     joined = np.concatenate([people[0] for _, people in chunks])
     np.testing.assert_array_equal(joined, gen.generate(req).people[0])
@@ -75,6 +75,6 @@ def test_bad_requests_and_plans_raise_value_error(gen):
             Request("a person walks", **kwargs)
     req = Request("a person walks", 1, 3.0, seed=0)
     plan = gen.plan(req)
-    plan["segments"][0]["retrieval"]["tracks"][0][0]["clip"] = "nope"
+    plan.segments[0].retrieval.tracks[0][0].clip = "nope"
     with pytest.raises(ValueError, match="unknown clip"):
         list(gen.stream(req, plan))

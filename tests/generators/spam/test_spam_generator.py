@@ -17,6 +17,7 @@ from interplay.generators.spam.generator import resolve_edit_part, segment_texts
 from interplay.generators.spam.runtime import DEFAULT_DIR, part_texts
 from interplay.generators.weights import placeholder_reason
 from interplay.motion import skeleton as sk
+from interplay.planner.schema import Segment
 from tests.helpers.spam_stub import StubEncoder
 from tests.helpers.synthetic_motion import fk_motion, stand_in_clips
 
@@ -44,7 +45,7 @@ def test_one_person_uses_spam_and_streams_exact_frames(spam_gen):
     assert spam_gen.spam is not None
     req = Request("a person walks forward, then jumps", persons=1, seconds=13.3, seed=4)
     plan = spam_gen.plan(req)
-    assert plan["generator"] == "spam" and plan["seed"] == 4 and len(plan["segments"]) == 2
+    assert plan.generator == "spam" and plan.seed == 4 and len(plan.segments) == 2
     chunks = list(spam_gen.stream(req, plan))
     starts = [s for s, _ in chunks]
     sizes = [len(c[0]) for _, c in chunks]
@@ -57,7 +58,7 @@ def test_one_person_uses_spam_and_streams_exact_frames(spam_gen):
 
 def test_two_people_fall_back_to_retrieval_with_a_reason(spam_gen):
     plan = spam_gen.plan(Request("two people dance salsa", persons=2, seconds=4, seed=1))
-    assert plan["generator"] == "retrieval" and "one person" in plan["generator_reason"]
+    assert plan.generator == "retrieval" and "one person" in plan.generator_reason
 
 
 @pytest.mark.parametrize("case", ["missing", "broken", "placeholder"])
@@ -73,7 +74,7 @@ def test_bad_weights_fall_back_to_retrieval(case, index, tmp_path):
     assert gen.spam is None
     req = Request("a person walks forward", persons=1, seconds=3, seed=2)
     plan = gen.plan(req)
-    assert plan["generator"] == "retrieval" and str(d) in plan["generator_reason"]
+    assert plan.generator == "retrieval" and str(d) in plan.generator_reason
     assert gen.generate(req).frames == 60
     with pytest.raises(EditUnavailable, match="SPAM"):
         gen.edit(fk_motion(40, "walk")[0], "left_arm", "waves", seed=0)
@@ -100,9 +101,12 @@ def test_edit_through_the_generator(spam_gen):
 
 
 def test_planned_part_edits_become_part_prompts():
-    seg = {"prompt": "a person walks while waving", "base": "a person walks",
-           "edits": {"left_arm": None, "right_arm": "waves the right hand", "left_leg": "",
-                     "right_leg": None}}
+    timing = {"index": 0, "seconds": 1.0, "start": 0, "end": 20, "persons": [0]}
+    seg = Segment.model_validate({
+        "prompt": "a person walks while waving", "base": "a person walks", **timing,
+        "edits": {"left_arm": None, "right_arm": "waves the right hand", "left_leg": "",
+                  "right_leg": None}})
     assert part_texts(segment_texts(seg)) == ["a person walks", "waves the right hand",
                                               "a person walks", "a person walks"]
-    assert segment_texts({"prompt": "a person jumps", "edits": {}}) == "a person jumps"
+    jump = Segment.model_validate({"prompt": "a person jumps", "base": "a person jumps", **timing})
+    assert segment_texts(jump) == "a person jumps"

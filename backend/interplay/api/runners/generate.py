@@ -91,7 +91,7 @@ class GenerateRunner:
                       "min_distance": self.min_dist[:w] if self.min_dist is not None else None}
         try:
             self.repo.create(id=job.motion_id, prompt=spec.prompt, people=final,
-                             seconds=spec.seconds, seed=spec.seed, plan=plain(out.plan),
+                             seconds=spec.seconds, seed=spec.seed, plan=plain(out.plan.to_json()),
                              metrics=metrics, highlights=highlights, review=plain(out.review))
         except Exception as exc:
             raise StageError("store", f"{type(exc).__name__}: {exc}") from exc

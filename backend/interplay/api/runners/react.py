@@ -1,5 +1,5 @@
 """The `react` job (`POST /api/jobs` with `mode: "react"`): a reactor generated frame by frame
-(ARFlow, `agents.reaction.ReactionSession`) for the stored motion's person 0, streamed next to
+(ARFlow, `reaction.react.open_session`) for the stored motion's person 0, streamed next to
 the actor as person 1, then stored as a new two-person motion whose parent is the actor's.
 
 Events: plan → segment(generating) → (frames, highlights)* → segment(done) → metrics → done.
@@ -9,6 +9,7 @@ so the player can draw the pair as it grows."""
 from __future__ import annotations
 
 import time
+from typing import Any
 
 import numpy as np
 
@@ -53,7 +54,7 @@ def react_job(job, repo, guidance: bool = True, chunk: int = CHUNK) -> None:
     job.push(PlanEvent(plan=plan).dump())
     job.push(SegmentEvent(index=0, status="generating", generator="arflow").dump())
     reactor = np.zeros((total, NUM_JOINTS, 3), dtype=np.float64)
-    highlights = {"contacts": [], "penetration": [], "min_distance": []}
+    highlights: dict[str, list[Any]] = {"contacts": [], "penetration": [], "min_distance": []}
     step_ms = []
     for start in range(0, total, chunk):
         end = min(total, start + chunk)

@@ -26,6 +26,8 @@ Shapes: joints (T, 22, 3) metres, Y up, 20 fps, both people in one world frame.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from interplay.generators.coda.contact_kinds import (
@@ -222,7 +224,7 @@ def _attempt(a0, b0, kind, rs: list[Reach], timing, free_start: bool, free_end: 
         start = _best_start(cost, lo, hi, hold)
         end = start + hold
     gaps = reach_gaps(a0, b0, rs)                                          # (T, R)
-    touching = ((gaps >= ALREADY[0]) & (gaps <= ALREADY[1])).all(axis=1)
+    touching = np.all((gaps >= ALREADY[0]) & (gaps <= ALREADY[1]), axis=1)
     if touching[lo:hi + hold].sum() >= hold:
         raise Skip("the hands already touch in the window")
     held = slice(start, end)
@@ -262,7 +264,7 @@ def refine_contact(joints_a: np.ndarray, joints_b: np.ndarray, kind: str | None,
     a0, b0 = (np.asarray(x, np.float64) for x in (joints_a, joints_b))
     if a0.shape != b0.shape or a0.ndim != 3 or a0.shape[1:] != (sk.NUM_JOINTS, 3):
         raise ValueError(f"expected two (T, 22, 3) joint arrays, got {a0.shape} and {b0.shape}")
-    report = {"kind": kind, "applied": False, "reason": None}
+    report: dict[str, Any] = {"kind": kind, "applied": False, "reason": None}
     if kind is None:
         report["reason"] = "the prompt asks for no contact"
         return a0, b0, report

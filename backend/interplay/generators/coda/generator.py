@@ -10,17 +10,17 @@ reach it, and the fallback when its weights are missing or untrained, is the rou
 
 from __future__ import annotations
 
-import secrets
 from typing import Iterator
 
 import numpy as np
 
-from interplay.generators.base import Request
+from interplay.generators.base import Request, random_seed
 from interplay.generators.coda.contact_kinds import contact_kind
 from interplay.generators.coda.finish import finish_pair, hold_feet
 from interplay.generators.coda.runtime import CHUNK, CodaRuntime
+from interplay.generators.plan import GenerationPlan, ModelInfo
 from interplay.motion import skeleton as sk
-from interplay.planner.plan import plan_json
+from interplay.planner.plan import plan as make_plan
 
 
 class CodaGenerator:
@@ -29,23 +29,21 @@ class CodaGenerator:
     def __init__(self, coda: CodaRuntime):
         self.coda = coda
 
-    def plan(self, req: Request) -> dict:
-        plan = plan_json(req.prompt, req.persons, req.seconds)
-        seed = req.seed if req.seed is not None else secrets.randbelow(2**31)
+    def plan(self, req: Request) -> GenerationPlan:
         c = self.coda.config
-        plan.update({"seed": seed, "generator": "coda", "synthetic": False, "sources": [],
-                     "model": {"name": "coda", "codes": c.codes,
-                               "interaction_codes": c.interaction_codes, "cfg": c.cfg,
-                               "steps": c.steps, "max_seconds_per_window": c.max_frames / sk.FPS}})
-        return plan
+        model = ModelInfo(name="coda", codes=c.codes, interaction_codes=c.interaction_codes,
+                          cfg=c.cfg, steps=c.steps, max_seconds_per_window=c.max_frames / sk.FPS)
+        seed = req.seed if req.seed is not None else random_seed()
+        return GenerationPlan.from_plan(make_plan(req.prompt, req.persons, req.seconds), seed=seed,
+                                        generator="coda", synthetic=False, sources=[], model=model)
 
-    def stream(self, req: Request, plan: dict) -> Iterator[tuple[int, list[np.ndarray]]]:
-        segs = plan["segments"]
-        segments = [(str(s["prompt"]), int(s["end"]) - int(s["start"])) for s in segs]
+    def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
+        segs = plan.segments
+        segments = [(s.prompt, s.end - s.start) for s in segs]
         kinds = [contact_kind(p) for p, _ in segments]
         held, index = [], 0
-        for start, people in self.coda.stream(segments, int(plan["seed"])):
-            while start >= int(segs[index]["end"]):
+        for start, people in self.coda.stream(segments, plan.seed):
+            while start >= segs[index].end:
                 index += 1
             if kinds[index] is None:
                 yield start, [p.astype(np.float32) for p in hold_feet(people)]
@@ -54,12 +52,12 @@ class CodaGenerator:
             # streamed; the next segment continues from the model's own frames, so the
             # refinement eases out before a segment joins (free_end False).
             held.append(people)
-            a, b = int(segs[index]["start"]), int(segs[index]["end"])
+            a, b = segs[index].start, segs[index].end
             if start + people.shape[1] < b:
                 continue
             pair, report = finish_pair(np.concatenate(held, axis=1), segments[index][0],
                                        free_start=index == 0, free_end=index == len(segs) - 1)
             held = []
-            segs[index]["contact"] = report
+            segs[index].contact = report
             for f in range(0, b - a, CHUNK):
                 yield a + f, [p.astype(np.float32) for p in pair[:, f:f + CHUNK]]

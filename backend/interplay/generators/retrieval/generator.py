@@ -13,17 +13,17 @@ and marks the segment as synthetic.
 
 from __future__ import annotations
 
-import secrets
 from collections.abc import Iterator
 
 import numpy as np
 
-from interplay.generators.base import Request, generate_motion
+from interplay.generators.base import Request, generate_motion, random_seed
+from interplay.generators.plan import CapturePiece, GenerationPlan, RetrievalChoice, Source
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieval.stitch import Stitcher
 from interplay.motion.motion import Motion
 from interplay.motion.skeleton import PELVIS
-from interplay.planner.plan import plan_json
+from interplay.planner.plan import plan as make_plan
 
 CHUNK = 40          # frames per streamed chunk at most (2 s)
 SPACING = 1.5       # metres between two composed people
@@ -39,6 +39,15 @@ def _pair_end(after: list[dict]) -> dict | None:
     return after[0] if len(after) == 1 and len(after[0]["people"]) == 2 else None
 
 
+def _pieces(track: list[dict]) -> list[CapturePiece]:
+    return [CapturePiece.model_validate(p) for p in track]
+
+
+def _ends(retrieval: RetrievalChoice) -> list[dict]:
+    """Each track's last piece, as the index takes it (`after`: the pose to continue from)."""
+    return [t[-1].model_dump() for t in retrieval.tracks]
+
+
 class RetrievalGenerator:
     def __init__(self, index: RetrievalIndex):
         self.index = index
@@ -51,38 +60,52 @@ class RetrievalGenerator:
         return float(np.hypot(*(pelvis[1] - pelvis[0])[[0, 2]]))
 
     def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator,
-                 after: list[dict] | None = None) -> dict:
-        """The captured pieces for one segment: {"mode", "tracks", "synthetic"[, "arrangement"]};
-        `after` holds the previous segment's last piece per track, whose end pose the new
-        pieces start from."""
+                 after: list[dict] | None = None) -> RetrievalChoice:
+        """The captured pieces for one segment; `after` holds the previous segment's last
+        piece per track, whose end pose the new pieces start from."""
         idx, after = self.index, after or []
         if persons == 2 and idx.use_pair(prompt):
-            return {"mode": "pair", "synthetic": False,
-                    "tracks": [idx.track(prompt, frames, rng, pair=True, after=_pair_end(after))]}
+            return RetrievalChoice(mode="pair", synthetic=False, tracks=[
+                _pieces(idx.track(prompt, frames, rng, pair=True, after=_pair_end(after)))])
         first = idx.track(prompt, frames, rng, after=after[0] if after else None)
         if persons == 1:
-            return {"mode": "single", "synthetic": False, "tracks": [first]}
+            return RetrievalChoice(mode="single", synthetic=False, tracks=[_pieces(first)])
         second = idx.track(prompt, frames, rng, exclude={first[0]["clip"]},
                            after=after[1] if len(after) > 1 else None)
         travel = max(self._travel(first), self._travel(second))
-        return {"mode": "composed", "synthetic": True, "tracks": [first, second],
-                "arrangement": "side_by_side" if travel > TRAVEL else "facing"}
+        return RetrievalChoice(mode="composed", synthetic=True,
+                               tracks=[_pieces(first), _pieces(second)],
+                               arrangement="side_by_side" if travel > TRAVEL else "facing")
 
-    def plan(self, req: Request) -> dict:
+    def _summarise(self, plan: GenerationPlan) -> None:
+        """The plan's `synthetic` and `sources` (clip, licence, label) from its segments' captures."""
+        clips = {p.clip for s in plan.segments if s.retrieval for t in s.retrieval.tracks for p in t}
+        plan.synthetic = any(s.retrieval is not None and s.retrieval.synthetic for s in plan.segments)
+        plan.sources = [Source(clip=c, licence=self.index.clip(c).licence,
+                               label=self.index.clip(c).label) for c in sorted(clips)]
+
+    def plan(self, req: Request) -> GenerationPlan:
         """The planner's plan plus, per segment, the captures chosen for it and the seed used."""
-        plan = plan_json(req.prompt, req.persons, req.seconds)
-        seed = req.seed if req.seed is not None else secrets.randbelow(2**31)
+        seed = req.seed if req.seed is not None else random_seed()
+        plan = GenerationPlan.from_plan(make_plan(req.prompt, req.persons, req.seconds),
+                                        seed=seed, generator="retrieval")
         after = None
-        for seg in plan["segments"]:
-            seg["retrieval"] = self.retrieve(seg["prompt"], seg["end"] - seg["start"], req.persons,
-                                             _rng(seed, seg["index"]), after)
-            after = [t[-1] for t in seg["retrieval"]["tracks"]]
-        clips = {p["clip"] for s in plan["segments"] for t in s["retrieval"]["tracks"] for p in t}
-        plan.update({"seed": seed, "generator": "retrieval",
-                     "synthetic": any(s["retrieval"]["synthetic"] for s in plan["segments"]),
-                     "sources": [{"clip": c, "licence": self.index.clip(c).licence,
-                                  "label": self.index.clip(c).label} for c in sorted(clips)]})
+        for seg in plan.segments:
+            seg.retrieval = self.retrieve(seg.prompt, seg.end - seg.start, req.persons,
+                                          _rng(seed, seg.index), after)
+            after = _ends(seg.retrieval)
+        self._summarise(plan)
         return plan
+
+    def redraw(self, plan: GenerationPlan, index: int, seed: int) -> GenerationPlan:
+        """A copy of `plan` whose retrieval segment `index` is drawn again with `seed`,
+        continuing from the previous segment's captures."""
+        out = plan.model_copy(deep=True)
+        seg, prev = out.segments[index], out.segments[index - 1].retrieval if index > 0 else None
+        seg.retrieval = self.retrieve(seg.prompt, seg.end - seg.start, out.persons,
+                                      _rng(seed, index), _ends(prev) if prev else None)
+        self._summarise(out)
+        return out
 
     # -- frames ------------------------------------------------------------------------------
     def _placement(self, arrangement: str) -> list[tuple[np.ndarray, float]]:
@@ -92,37 +115,38 @@ class RetrievalGenerator:
             return [(np.array([half, 0.0, 0.0]), 0.0), (np.array([-half, 0.0, 0.0]), 0.0)]
         return [(np.array([-half, 0.0, 0.0]), np.pi / 2), (np.array([half, 0.0, 0.0]), -np.pi / 2)]
 
-    def _render(self, stitcher: Stitcher, retrieval: dict, persons: int) -> list[np.ndarray]:
+    def _render(self, stitcher: Stitcher, retrieval: RetrievalChoice, persons: int
+                ) -> list[np.ndarray]:
         """One segment's frames per person, continuing what the stitcher has output so far."""
-        tracks = [self.index.pieces(t) for t in retrieval["tracks"]]
-        if retrieval["mode"] == "pair":
+        tracks = [self.index.pieces([p.model_dump() for p in t]) for t in retrieval.tracks]
+        if retrieval.mode == "pair":
             parts = [stitcher.add_pair(piece) for piece in tracks[0]]
             return [np.concatenate([p[i] for p in parts]) for i in range(2)]
         if len(tracks) != persons:
             raise ValueError(f"segment has {len(tracks)} tracks for {persons} people")
-        place = self._placement(retrieval.get("arrangement", "facing")) if persons == 2 else [None]
+        place = self._placement(retrieval.arrangement or "facing") if persons == 2 else [None]
         out = []
         for person, track in enumerate(tracks):
             frames = [stitcher.add_single(person, piece[0], place[person]) for piece in track]
             out.append(np.concatenate(frames))
         return out
 
-    def stream(self, req: Request, plan: dict) -> Iterator[tuple[int, list[np.ndarray]]]:
+    def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
         """(start frame, one (n, 22, 3) float32 chunk per person), in order, n ≤ 40, covering
         every frame of the plan (round(seconds × 20))."""
-        persons, seed = plan.get("persons", req.persons), plan.get("seed", req.seed or 0)
+        persons, seed = plan.persons, plan.seed
         stitcher, expected, after = Stitcher(persons), 0, None
-        for seg in plan["segments"]:
-            start, end = int(seg["start"]), int(seg["end"])
+        for seg in plan.segments:
+            start, end = seg.start, seg.end
             if start != expected or end <= start:
-                raise ValueError(f"plan segments must tile the motion; segment {seg.get('index')} "
+                raise ValueError(f"plan segments must tile the motion; segment {seg.index} "
                                  f"spans {start}–{end}, expected to start at {expected}")
-            retrieval = seg.get("retrieval") or self.retrieve(seg["prompt"], end - start, persons,
-                                                              _rng(seed, seg.get("index", 0)), after)
-            after = [t[-1] for t in retrieval["tracks"]]
+            retrieval = seg.retrieval or self.retrieve(seg.prompt, end - start, persons,
+                                                       _rng(seed, seg.index), after)
+            after = _ends(retrieval)
             frames = self._render(stitcher, retrieval, persons)
             if any(len(f) != end - start for f in frames):
-                raise ValueError(f"segment {seg.get('index')}: the plan's pieces do not last "
+                raise ValueError(f"segment {seg.index}: the plan's pieces do not last "
                                  f"{end - start} frames")
             for a in range(0, end - start, CHUNK):
                 yield start + a, [f[a:a + CHUNK] for f in frames]

@@ -153,7 +153,8 @@ class RetrievalIndex:
         return start, min(total, start + need)
 
     def track(self, text: str, frames: int, rng: np.random.Generator, pair: bool = False,
-              exclude: set[str] = frozenset(), after: dict | None = None) -> list[dict]:
+              exclude: frozenset[str] | set[str] = frozenset(), after: dict | None = None
+              ) -> list[dict]:
         """Pieces that last `frames` for a prompt: [{"clip", "people", "start", "end", "score"}];
         `after` is the piece this track continues (its start pose is matched)."""
         cands = self.shortlist(text, pair, rng)
@@ -162,7 +163,8 @@ class RetrievalIndex:
         if not cands:
             raise ValueError("no captured motion matches this request")
         people = [0, 1] if pair else [0]
-        pieces, left = [], frames
+        pieces: list[dict] = []
+        left = frames
         while left > 0:
             cand = cands[int(rng.integers(len(cands)))]
             start, end = self._cut(cand, left, rng, not pieces, self._target(after, people), people)

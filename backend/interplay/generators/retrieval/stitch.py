@@ -145,27 +145,30 @@ class Stitcher:
     def _target(self, person: int) -> tuple[np.ndarray, np.ndarray]:
         """Where the next frame's pelvis goes (one step ahead) and the current heading."""
         last = self.last[person]
+        assert last is not None, "only a started person has a target"
         step = last[-1, sk.PELVIS] - last[-2, sk.PELVIS] if len(last) > 1 else np.zeros(3)
         return last[-1, sk.PELVIS] + step, heading(last)
 
     def _finish(self, person: int, piece: Piece) -> np.ndarray:
         """Cross-fade (when continuing), refit to the person's bones, remember the end."""
-        if self.offsets[person] is None:
-            self.offsets[person] = piece.offsets.astype(np.float64)
         off = self.offsets[person]
+        if off is None:
+            off = self.offsets[person] = piece.offsets.astype(np.float64)
         core = piece.core.astype(np.float64)
-        if self.last[person] is not None:
-            cont = _continuation(self.last[person], self.tail[person], min(FADE, len(core)))
+        last, prev_tail = self.last[person], self.tail[person]
+        if last is not None and prev_tail is not None:
+            cont = _continuation(last, prev_tail, min(FADE, len(core)))
             core = crossfade(cont, core)
         out = refit(core, off)
         tail = refit(piece.tail.astype(np.float64), off)
-        self.last[person] = np.concatenate([self.last[person], out])[-HEADING:] \
-            if self.last[person] is not None else out[-HEADING:]
+        self.last[person] = np.concatenate([last, out])[-HEADING:] \
+            if last is not None else out[-HEADING:]
         self.tail[person] = tail
         return out.astype(np.float32)
 
     def _prepared(self, person: int, piece: Piece) -> Piece:
-        return scale_root(piece, self.offsets[person]) if self.offsets[person] is not None else piece
+        off = self.offsets[person]
+        return scale_root(piece, off) if off is not None else piece
 
     def add_single(self, person: int, piece: Piece,
                    start: tuple[np.ndarray, float] | None = None) -> np.ndarray:
@@ -189,9 +192,10 @@ class Stitcher:
         pieces = [self._prepared(i, p) for i, p in enumerate(pieces)]
         a, b = (p.core for p in pieces)
         mid, d = pair_frame(a[:HEADING], b[:HEADING])
-        if all(self.started(i) for i in range(2)):
+        last_a, last_b = self.last[0], self.last[1]
+        if last_a is not None and last_b is not None:
             (ta, _), (tb, _) = self._target(0), self._target(1)
-            _, d_out = pair_frame(self.last[0], self.last[1])
+            _, d_out = pair_frame(last_a, last_b)
             target, yaw = (ta + tb) / 2, _angle(d_out) - _angle(d)
         else:
             # First piece: person 0's pelvis at the origin facing +Z (the canonical frame).

@@ -10,15 +10,16 @@ fallback when its weights are missing or untrained, is the router's (`generators
 from __future__ import annotations
 
 import logging
-import secrets
-from typing import Iterator
+from collections.abc import Iterator, Mapping
 
 import numpy as np
 
-from interplay.generators.base import Request
+from interplay.generators.base import Request, random_seed
+from interplay.generators.plan import GenerationPlan, ModelInfo
 from interplay.generators.spam.runtime import Edit, SpamRuntime
 from interplay.motion import skeleton as sk
-from interplay.planner.plan import plan_json
+from interplay.planner.plan import plan as make_plan
+from interplay.planner.schema import Segment
 
 log = logging.getLogger(__name__)
 WHOLE_BODY = ("whole_body", "body", "all", "full_body")
@@ -39,34 +40,40 @@ def resolve_edit_part(part: str | None) -> list[str]:
         raise ValueError(f"unknown body part {part!r}; expected one of {list(EDIT_PARTS)}") from None
 
 
-def segment_texts(segment: dict) -> str | dict[str, str]:
+def segment_texts(segment: Segment) -> str | dict[str, str]:
     """SPAM's text for a plan segment: its prompt, or — when the planner split it into a
-    whole-body `base` and per-part `edits` ({"left_arm": text or None, …}, CoMA's P_base and
-    P_edit) — the base for every part and each edit for its own part."""
-    edits = {k: v for k, v in (segment.get("edits") or {}).items() if isinstance(v, str) and v.strip()}
+    whole-body `base` and per-part `edits` (CoMA's P_base and P_edit) — the base for every
+    part and each edit for its own part."""
+    edits = segment.edits.named()
     if not edits:
-        return segment["prompt"]
-    return {"global": segment.get("base") or segment["prompt"], **edits}
+        return segment.prompt
+    return {"global": segment.base or segment.prompt, **edits}
 
 
 class SpamGenerator:
     """SPAM's plans and frames for one-person requests, and its edits."""
 
+    reason = None      # always able to edit: the runtime is loaded
+
     def __init__(self, spam: SpamRuntime):
         self.spam = spam
 
-    def plan(self, req: Request) -> dict:
-        plan = plan_json(req.prompt, req.persons, req.seconds)
-        seed = req.seed if req.seed is not None else secrets.randbelow(2**31)
-        c = self.spam.config
-        plan.update({"seed": seed, "generator": "spam", "synthetic": False, "sources": [],
-                     "model": {"name": "spam", "codes": c.K, "layers": c.Q, "cfg": c.cfg,
-                               "steps": c.steps, "max_seconds_per_piece": c.max_frames / sk.FPS}})
-        return plan
+    @property
+    def can_edit(self) -> bool:
+        return True
 
-    def stream(self, req: Request, plan: dict) -> Iterator[tuple[int, list[np.ndarray]]]:
-        segments = [(segment_texts(s), int(s["end"]) - int(s["start"])) for s in plan["segments"]]
-        for start, joints in self.spam.stream(segments, int(plan["seed"])):
+    def plan(self, req: Request) -> GenerationPlan:
+        c = self.spam.config
+        model = ModelInfo(name="spam", codes=c.K, layers=c.Q, cfg=c.cfg, steps=c.steps,
+                          max_seconds_per_piece=c.max_frames / sk.FPS)
+        seed = req.seed if req.seed is not None else random_seed()
+        return GenerationPlan.from_plan(make_plan(req.prompt, req.persons, req.seconds), seed=seed,
+                                        generator="spam", synthetic=False, sources=[], model=model)
+
+    def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
+        segments: list[tuple[str | Mapping[str, str], int]] = [
+            (segment_texts(s), s.end - s.start) for s in plan.segments]
+        for start, joints in self.spam.stream(segments, plan.seed):
             yield start, [joints.astype(np.float32)]
 
     def edit(self, joints: np.ndarray, part: str | None, prompt: str,
@@ -77,7 +84,7 @@ class SpamGenerator:
         if not isinstance(prompt, str) or not prompt.strip():
             raise ValueError("the edit prompt is empty")
         parts = resolve_edit_part(part)
-        seed = seed if seed is not None else secrets.randbelow(2**31)
+        seed = seed if seed is not None else random_seed()
         edit = self.spam.edit(joints, parts, prompt.strip(), seed, frames=frames, context=context)
         entry = {"generator": "spam", "part": part or "whole_body", "parts": list(edit.parts),
                  "prompt": prompt.strip(), "frames": list(edit.frames), "seed": seed,

@@ -20,8 +20,9 @@ outside the edit from the input (`spam_edits`, `motion_splice`).
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
-from typing import Iterator, Mapping
+from typing import cast
 
 import numpy as np
 
@@ -65,7 +66,8 @@ def part_texts(texts: Texts) -> list[str]:
     if glob is None and len(per) < len(PARTS):
         missing = [p for p in PARTS if p not in per]
         raise ValueError(f"no prompt for {missing}: give a 'global' prompt for the other parts")
-    return [per.get(p, glob) for p in PARTS]
+    # glob is set whenever a part has no prompt of its own (checked above)
+    return [per[p] if p in per else cast(str, glob) for p in PARTS]
 
 
 class SpamRuntime:
@@ -140,8 +142,9 @@ class SpamRuntime:
         "residual", extra = (layer,)) with classifier-free guidance: the conditional and
         unconditional passes side by side (`self.pairs`) or as one batch of two; only the
         conditional pass when scale = 1."""
-        feeds, graph, pair = ((self._base_feeds if name == "base" else self._residual_feeds),
-                              self.graphs[name], self.pairs.get(name))
+        feeds: Callable[..., dict[str, np.ndarray]] = (
+            self._base_feeds if name == "base" else self._residual_feeds)
+        graph, pair = self.graphs[name], self.pairs.get(name)
         one, zero = np.ones(1, np.float32), np.zeros(1, np.float32)
         if scale == 1.0:
             def cond_only(tokens, *extra):
