@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from interplay.api.events import ErrorEvent
 from interplay.api.runners.generate import GenerateRunner
 from interplay.api.runners.react import react_job
+from interplay.api.schemas import JobState
 from interplay.motion.skeleton import FPS
 from interplay.pipeline.orchestrator import StageError
 from interplay.pipeline.segment_source import Cancelled  # raised by the orchestrator too
@@ -52,7 +53,7 @@ class Job:
         self.id = new_id()
         self.motion_id = new_id()
         self.spec = spec
-        self.status = "queued"            # queued → running → done | failed
+        self.status: JobState = "queued"  # queued → running → done | failed
         self.created = time.monotonic()
         self.finished: float | None = None
         self._events: list[dict] = []
@@ -156,10 +157,10 @@ class JobManager:
         MAX_FINISHED (their buffered frames hold memory; the motions stay in the store)."""
         now = time.monotonic()
         with self._lock:
-            finished = sorted((j for j in self._jobs.values() if j.finished is not None),
-                              key=lambda j: j.finished, reverse=True)
-            for i, j in enumerate(finished):
-                if i >= MAX_FINISHED or now - j.finished > self.retention_s:
+            finished = sorted(((j.finished, j) for j in self._jobs.values() if j.finished is not None),
+                              key=lambda pair: pair[0], reverse=True)
+            for i, (at, j) in enumerate(finished):
+                if i >= MAX_FINISHED or now - at > self.retention_s:
                     del self._jobs[j.id]
 
     def _run(self, job: Job, generator) -> None:

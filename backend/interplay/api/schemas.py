@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
@@ -58,7 +58,7 @@ class EditCreate(BaseModel):
     @field_validator("prompt")
     @classmethod
     def _prompt(cls, v: str | None) -> str | None:
-        return None if v is None else JobCreate._prompt.__func__(cls, v)
+        return None if v is None else JobCreate._prompt(v)     # the same rules as a job's prompt
 
     @model_validator(mode="after")
     def _something(self):
@@ -91,10 +91,13 @@ class JobCreated(BaseModel):
     seed: int
 
 
+JobState = Literal["queued", "running", "done", "failed"]
+
+
 class JobStatus(BaseModel):
     job_id: str
     motion_id: str
-    status: Literal["queued", "running", "done", "failed"]
+    status: JobState
     events: int
     stream: str
 
@@ -154,4 +157,5 @@ class ErrorOut(BaseModel):
     detail: str
 
 
-ERRORS = {code: {"model": ErrorOut} for code in (404, 422)}
+# The type FastAPI's `responses=` takes.
+ERRORS: dict[int | str, dict[str, Any]] = {code: {"model": ErrorOut} for code in (404, 422)}

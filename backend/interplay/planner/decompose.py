@@ -120,6 +120,7 @@ def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb
         return parts_in(mod), plain(third(hit[0].base) + mod[len(first):]), hit[0]
     m = re.match(r"^(?:(?:the|a|an|his|her|their)\s+)?(?:(left|right|both|other)\s+)?"
                  r"(?:(arms?|hands?|fists?|legs?|foot|feet|knees?|elbows?|palms?)\b)?\s*(.*)$", mod)
+    assert m is not None                    # every group is optional: the pattern always matches
     side, noun, rest = m.group(1), m.group(2), m.group(3)
     if noun is None and side in ("left", "right") and last_limb:
         noun = last_limb[0].split("_")[1]                            # "… and the left raised"
@@ -175,8 +176,8 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
     first = rest.split(" ", 1)[0]
     hit = lookup(first)
     verb = hit[0] if hit else None
-    if verb is not None and hit[1] != "gerund":
-        rest = third(verb.base) + rest[len(first):]
+    if hit is not None and hit[1] != "gerund":
+        rest = third(hit[0].base) + rest[len(first):]
     if verb is not None and verb.kind == "light":
         doing = re.match(r"^does a (handstand|push-up|sit-up|jumping jack)", rest)
         verb = VERBS["stand"] if doing else None
@@ -198,6 +199,7 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
     main = plain(main)
     last = list(last_parts or [])
     if verb.kind == "part":
+        assert verb.part is not None        # every "part" verb names its limb (verbs.VERBS)
         if re.search(r"\b(?:it|them)\b", main) and last:                # "lowers it"
             noun = "both arms" if len(last) == 2 else "the " + last[0].replace("_", " ")
             main = re.sub(r"\b(?:it|them)\b", noun, main, count=1)

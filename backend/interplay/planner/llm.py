@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 import re
-from typing import Callable
+from typing import Any, Callable
 
 import httpx
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
@@ -101,7 +101,8 @@ def to_plan(answer: LLMAnswer, prompt: str, persons: int, seconds: float | None)
     total = max(1, round((seconds if seconds else min(sum(est), 60.0)) * FPS))
     if len(est) > total // 10:
         raise ValueError(f"{len(est)} steps do not fit in {total / FPS:g} s")
-    frames, segments, start = allocate(est, total), [], 0
+    frames, start = allocate(est, total), 0
+    segments: list[dict[str, Any]] = []
     for i, (s, n) in enumerate(zip(answer.segments, frames)):
         if any(p >= persons or p < 0 for p in s.persons):
             raise ValueError(f"segment {i}: persons {s.persons} for a plan of {persons} person(s)")
@@ -111,8 +112,10 @@ def to_plan(answer: LLMAnswer, prompt: str, persons: int, seconds: float | None)
                          "persons": sorted(set(s.persons)), "roles": roles, "seconds": n / FPS,
                          "start": start, "end": start + n})
         start += n
-    return Plan(prompt=prompt, rewritten=answer.rewritten, persons=persons, seconds=total / FPS,
-                segments=segments, reasons=answer.reasons, planner="llm")
+    # Validated from plain data: `persons` and the segments are checked by the Plan schema.
+    return Plan.model_validate({"prompt": prompt, "rewritten": answer.rewritten, "persons": persons,
+                                "seconds": total / FPS, "segments": segments,
+                                "reasons": answer.reasons, "planner": "llm"})
 
 
 def ask(prompt: str, persons: int, seconds: float | None, settings,

@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from typing import Any
 
 from interplay.motion.skeleton import FPS
 from interplay.planner import lexicon, questions, temporal
@@ -28,7 +29,7 @@ from interplay.planner.decompose import POSTURE_BASE, Action, decompose, split_s
 from interplay.planner.durations import allocate, estimate, fits
 from interplay.planner.schema import Plan, TrajectorySpec
 from interplay.planner.trajectory_text import parse as parse_trajectory
-from interplay.planner.verbs import VERBS, lookup, noun_verb
+from interplay.planner.verbs import VERBS, is_verb, lookup, noun_verb
 
 MAX_PROMPT = 500
 MAX_SECONDS = 60.0
@@ -73,7 +74,8 @@ def _onset_poses(text: str) -> tuple[str, list[str]]:
     """"runs in a zigzag while striking <pose>" → "runs in a zigzag, then runs in a zigzag holding
     <pose>": a pose struck during travel is a second step (the pose is then held)."""
     m = _ONSET.search(text)
-    if not m or lexicon.find(m.group(1)) is None or lexicon.find(m.group(1)).hold is None:
+    entry = lexicon.find(m.group(1)) if m else None
+    if m is None or entry is None or entry.hold is None:
         return text, []
     head = text[:m.start()]
     start = max(head.rfind(c) for c in ",.;") + 1
@@ -135,7 +137,7 @@ def _resolve(action: Action, clause: str, posture: str, last_parts, vocab, reaso
     """A clause the decomposer did not understand: the nearest vocabulary phrase when close
     enough; None when the clause has no motion at all (it is dropped)."""
     words = re.findall(r"[a-z-]+", action.text)
-    if all((lookup(w) and lookup(w)[0].kind == "light") or w in _FILLER for w in words):
+    if all(is_verb(w, ("light",)) or w in _FILLER for w in words):
         reasons.append(f"dropped '{clause}': no motion in it")       # "gets (tired)"
         return None
     if vocab is not None:
@@ -182,11 +184,14 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             reasons.append(f"similarity unavailable ({type(exc).__name__})")
         reasons.append(why)
     for step in (strip_context, _onset_poses, lexicon.rewrite):
-        text, why = step(text)
-        reasons.extend(why)
+        text, notes = step(text)
+        reasons.extend(notes)
     clauses = temporal.split(temporal.normalize(text)) or [temporal.Clause(text.lower())]
     steps: list[_Step] = []
-    postures, names, prev, last_parts = ["standing"] * persons, {}, None, []
+    postures = ["standing"] * persons
+    names: dict[str, int] = {}
+    prev: list[int] | None = None
+    last_parts: list[str] = []
     for clause in clauses:
         other = _OTHER.search(clause.text) if persons == 2 else None
         if other:                                  # "… while the other waves": both act
@@ -241,7 +246,8 @@ def _timed(prompt, persons, seconds, steps: list[_Step], reasons) -> Plan:
     frames = allocate(est, total)
     if seconds is not None:
         reasons.append(f"durations: estimated {sum(est):.1f} s, scaled to {total / FPS:g} s")
-    segments, start = [], 0
+    segments: list[dict[str, Any]] = []
+    start = 0
     for i, (s, n) in enumerate(zip(steps, frames)):
         roles = None
         if persons == 2:
@@ -254,8 +260,10 @@ def _timed(prompt, persons, seconds, steps: list[_Step], reasons) -> Plan:
             "repeat": s.repeat})
         start += n
     rewritten = ", then ".join(seg["prompt"] for seg in segments)
-    return Plan(prompt=prompt, rewritten=rewritten, persons=persons, seconds=total / FPS,
-                segments=segments, reasons=reasons, planner="embedded")
+    # Validated from plain data: `persons` and the segments are checked by the Plan schema.
+    return Plan.model_validate({"prompt": prompt, "rewritten": rewritten, "persons": persons,
+                                "seconds": total / FPS, "segments": segments,
+                                "reasons": reasons, "planner": "embedded"})
 
 
 def plan(prompt: str, persons: int = 1, seconds: float | None = None, settings=None) -> Plan:

@@ -16,14 +16,15 @@ The JSON keeps the keys the API streamed before (index/prompt/start/end/persons 
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Literal, get_args
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 from interplay.motion.skeleton import FPS
 
-SHAPES = ("line", "arc", "circle", "zigzag", "s_curve", "heart", "figure_eight", "square",
-          "spiral", "polyline", "free")
+Shape = Literal["line", "arc", "circle", "zigzag", "s_curve", "heart", "figure_eight", "square",
+                "spiral", "polyline", "free"]
+SHAPES: tuple[Shape, ...] = get_args(Shape)
 PARTS = ("left_arm", "right_arm", "left_leg", "right_leg")
 MAX_SEGMENTS = 16
 
@@ -38,7 +39,7 @@ class TurnAt(BaseModel):
 
 class TrajectorySpec(BaseModel):
     model_config = ConfigDict(extra="forbid")
-    shape: Literal[SHAPES]
+    shape: Shape
     clockwise: bool | None = None                 # seen from above
     size_m: float | None = Field(default=None, gt=0, le=50)        # diameter / side / width
     distance_m: float | None = Field(default=None, gt=0, le=200)   # path length or line length

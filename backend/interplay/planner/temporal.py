@@ -70,10 +70,12 @@ _ALTERNATE = re.compile(r"(?:,?\s*while\s+|,\s*)?alternat\w*\s+between\s+(.+?)\s
 
 def _verb_in(word: str, like: str) -> str | None:
     """`word` ("sitting", "ran") as the verb in the form of `like` ("starts" → "sits")."""
-    hit = lookup(word) or ((lookup(noun_verb(word)) if noun_verb(word) else None))
+    noun = noun_verb(word)
+    hit = lookup(word) or (lookup(noun) if noun else None)
     if hit is None or hit[0].kind == "light":
         return None
-    form = lookup(like)[1] if lookup(like) else "third"
+    like_hit = lookup(like)
+    form = like_hit[1] if like_hit else "third"
     return gerund(hit[0].base) if form == "gerund" else third(hit[0].base)
 
 
@@ -162,7 +164,8 @@ def starts_action(text: str) -> bool:
 
 
 def _split_and(fragment: str) -> list[str]:
-    parts, out = re.split(r"\s+and\s+", fragment), []
+    parts = re.split(r"\s+and\s+", fragment)
+    out: list[str] = []
     for p in parts:
         if out and starts_action(p):
             out.append(p)
@@ -201,7 +204,7 @@ def _expand(text: str) -> list[tuple[str, tuple[int, int] | None]]:
     """"from a walk to a run, holding X" → two clauses; alternation → n clauses."""
     m = _FROM_TO.search(text)
     if m:
-        a, b = (noun_verb(w) or (lookup(w)[0].base if lookup(w) else None) for w in m.groups())
+        a, b = (noun_verb(w) or _base(w) for w in m.groups())
         if a and b:
             head, tail = text[:m.start()].strip(), text[m.end():]
             head = head + " " if head else ""
@@ -215,15 +218,22 @@ def _expand(text: str) -> list[tuple[str, tuple[int, int] | None]]:
         doing = []                                          # "taps the foot" → "tapping the foot"
         for act in acts:
             verb, _, rest = act.partition(" ")
-            doing.append(f"{gerund(lookup(verb)[0].base)} {rest}".strip() if lookup(verb) else act)
+            base = _base(verb)
+            doing.append(f"{gerund(base)} {rest}".strip() if base is not None else act)
         return [(f"{main} while {doing[k % 2]}" if main else acts[k % 2], (k, n)) for k in range(n)]
     return [(text, None)]
+
+
+def _base(word: str) -> str | None:
+    """The base form of the verb `word` ("sat" → "sit"), None for other words."""
+    hit = lookup(word)
+    return hit[0].base if hit else None
 
 
 def _act(phrase: str) -> str:
     """"foot taps" → "taps the right foot", "hand claps" → "claps the hands"."""
     words = phrase.split()
-    verb = noun_verb(words[-1]) or (lookup(words[0])[0].base if lookup(words[0]) else words[-1])
+    verb = noun_verb(words[-1]) or _base(words[0]) or words[-1]
     obj = [w for w in words if w != words[-1]]
     thing = {"foot": "the right foot", "feet": "the feet", "hand": "the hands",
              "hands": "the hands", "toe": "the right foot", "knee": "the right knee"}

@@ -16,8 +16,9 @@ from __future__ import annotations
 
 import math
 import re
+from typing import Literal, cast
 
-from interplay.planner.schema import TrajectorySpec
+from interplay.planner.schema import TrajectorySpec, TurnAt
 
 _NUM = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
         "nine": 9, "ten": 10, "twenty": 20, "a": 1, "half a": 0.5, "a half": 0.5}
@@ -74,14 +75,15 @@ def parse(text: str) -> TrajectorySpec | None:
     t = text.lower()
     clock = _CLOCK.search(t)
     if clock:
-        hour = clock.group(2)
-        hour = int(hour) if hour.isdigit() else _CLOCK_WORDS[hour]
+        word = clock.group(2)
+        hour = int(word) if word.isdigit() else _CLOCK_WORDS[word]
         if 1 <= hour <= 12:
-            side = clock.group(1) or ("right" if hour < 6 else "left" if hour > 6 else None)
+            said = cast(Literal["left", "right"] | None, clock.group(1))   # the pattern's (left|right)?
+            side = said or ("right" if hour < 6 else "left" if hour > 6 else None)
             dist = _DISTANCE.search(t)
-            extra = {"distance_m": round(_number(dist.group(1)) * _UNIT[dist.group(2)], 3)} if dist else {}
-            return TrajectorySpec(shape="line", turn_at={"clock": hour, "side": side},
-                                  direction="forward", text=text.strip(), **extra)
+            distance_m = round(_number(dist.group(1)) * _UNIT[dist.group(2)], 3) if dist else None
+            return TrajectorySpec(shape="line", turn_at=TurnAt(clock=hour, side=side),
+                                  direction="forward", text=text.strip(), distance_m=distance_m)
     travel = _TRAVEL_HINT.search(t) is not None or re.search(r"\b(?:path|trajectory|route)\b", t)
     # Shapes only count for travel: "swings the arm in circles" is not a path.
     shape = next((s for rx, s in _SHAPES if re.search(rx, t)), None) if travel else None

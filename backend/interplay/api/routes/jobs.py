@@ -26,6 +26,7 @@ def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request) 
     `motion_id` when done. `trajectory` makes a person follow a drawn path or preset shape;
     `mode: react` generates a reactor to the stored motion `actor_motion_id`."""
     if body.mode == "react":
+        assert body.actor_motion_id is not None     # JobCreate: mode react needs one
         if not repo.exists(body.actor_motion_id):
             raise HTTPException(404, f"no motion {body.actor_motion_id!r} to react to")
     # Looked up here, not as a dependency: dependencies run before the body is validated, and
