@@ -1,5 +1,5 @@
 """The `react` job (`POST /api/jobs` with `mode: "react"`): a reactor generated frame by frame
-(ARFlow, `agents.reaction.ReactionSession`) for the stored motion's person 0, streamed next to
+(ARFlow, `reaction.react.open_session`) for the stored motion's person 0, streamed next to
 the actor as person 1, then stored as a new two-person motion whose parent is the actor's.
 
 Events: plan → segment(generating) → (frames, highlights)* → segment(done) → metrics → done.
