@@ -104,33 +104,32 @@ class Router:
         return generate_motion(self, req)
 
 
+def _load(runtime, name: str, weights_dir: Path, encoder, allow_untrained: bool, fallback: str):
+    """(runtime.load(weights_dir), None) when the weights load and are trained (or
+    allow_untrained), else (None, why) with the reason logged."""
+    reason = None if allow_untrained else placeholder_reason(weights_dir, name)
+    if reason is None:
+        try:
+            return runtime.load(weights_dir, encoder=encoder), None
+        except Exception as exc:   # missing, broken or foreign files: serve retrieval
+            reason = f"{name} weights in {weights_dir} did not load ({type(exc).__name__}: {exc})"
+    log.warning("%s: %s", fallback, reason)
+    return None, reason
+
+
 def load_spam(weights_dir: str | Path | None = None, encoder=None, allow_untrained: bool = False
               ) -> tuple[SpamRuntime | None, str | None]:
     """(runtime, None) when SPAM's weights load and are trained (or allow_untrained), else
     (None, why)."""
-    weights_dir = Path(weights_dir or SPAM_DIR)
-    reason = None if allow_untrained else placeholder_reason(weights_dir, "SPAM")
-    if reason is None:
-        try:
-            return SpamRuntime.load(weights_dir, encoder=encoder), None
-        except Exception as exc:   # missing, broken or foreign files: serve retrieval
-            reason = f"SPAM weights in {weights_dir} did not load ({type(exc).__name__}: {exc})"
-    log.warning("using retrieval only: %s", reason)
-    return None, reason
+    return _load(SpamRuntime, "SPAM", Path(weights_dir or SPAM_DIR), encoder, allow_untrained,
+                 "using retrieval only")
 
 
 def load_coda(weights_dir: str | Path | None = None, encoder=None, allow_untrained: bool = False
               ) -> tuple[CodaRuntime | None, str | None]:
     """(runtime, None) when CODA's weights load and are trained, else (None, why)."""
-    weights_dir = Path(weights_dir or CODA_DIR)
-    reason = None if allow_untrained else placeholder_reason(weights_dir, "CODA")
-    if reason is None:
-        try:
-            return CodaRuntime.load(weights_dir, encoder=encoder), None
-        except Exception as exc:   # missing, broken or foreign files: serve retrieval
-            reason = f"CODA weights in {weights_dir} did not load ({type(exc).__name__}: {exc})"
-    log.warning("two people use retrieval: %s", reason)
-    return None, reason
+    return _load(CodaRuntime, "CODA", Path(weights_dir or CODA_DIR), encoder, allow_untrained,
+                 "two people use retrieval")
 
 
 def with_spam(index: RetrievalIndex, weights_dir: str | Path | None = None,
@@ -149,7 +148,7 @@ def with_models(index: RetrievalIndex, spam_dir: str | Path | None = None,
 
 
 @lru_cache(maxsize=4)
-def _load(data_dir: str, spam_dir: str | None, use_spam: bool, coda_dir: str | None) -> Router:
+def _build(data_dir: str, spam_dir: str | None, use_spam: bool, coda_dir: str | None) -> Router:
     from interplay.text.encoder import get_encoder
 
     index = RetrievalIndex(default_clips(data_dir), get_encoder())
@@ -163,7 +162,7 @@ def build_generator(data_dir: str | Path | None = None, spam_dir: str | Path | N
     """The router over the processed data set (models/data by default), built once per
     arguments: SPAM (models/weights/spam) for one person and CODA (models/weights/coda) for
     two when their weights load, else retrieval; use_spam=False gives retrieval alone."""
-    return _load(str(data_dir or DATA_DIR), str(spam_dir) if spam_dir else None, use_spam,
+    return _build(str(data_dir or DATA_DIR), str(spam_dir) if spam_dir else None, use_spam,
                  str(coda_dir) if coda_dir else None)
 
 
