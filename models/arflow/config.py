@@ -10,12 +10,12 @@ representation gives its gradient analytically with no decoder to differentiate,
 (c) the relation between the two people (distance, facing) is explicit in the shared frame.
 Bones are restored afterwards by IK → FK on fixed bone lengths.
 
-Checkpoints store {"model": state_dict, "config": asdict(cfg)}; `from_dict` reads them back.
+Checkpoints store {"model": state_dict, "config": asdict(cfg)} (`models.common.checkpoint`).
 """
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, fields
+from dataclasses import dataclass
 
 POSE_DIM = 66              # 22 joints × xyz
 TEXT_DIM = 384             # MiniLM sentence embedding
@@ -48,12 +48,3 @@ class TrainConfig:
     eval_every: int = 500
     seed: int = 0
     threads: int = 2
-
-
-def to_dict(cfg) -> dict:
-    return asdict(cfg)
-
-
-def from_dict(cls, d: dict):
-    names = {f.name for f in fields(cls)}
-    return cls(**{k: v for k, v in d.items() if k in names})

@@ -22,18 +22,17 @@ from __future__ import annotations
 import argparse
 import json
 import shutil
-import warnings
 from pathlib import Path
 
-import numpy as np
 import torch
 
-from .config import POSE_DIM, TEXT_DIM, ARFlowConfig, from_dict
+from models.common import checkpoint, onnx_export
+
+from .config import POSE_DIM, TEXT_DIM, ARFlowConfig
 from .model import ARFlow, ARFlowStep
 
 ROOT = Path(__file__).resolve().parents[2]
 WEIGHTS = ROOT / "models" / "weights" / "arflow"
-OPSET = 17
 # Sampling defaults shipped with the graph (runtime may override): Euler steps, guidance
 # strength (metres of step per unit penetration gradient), safe distance (m), reprojection
 # weight γ on the predicted initial point, stochastic strength η.
@@ -41,11 +40,13 @@ SAMPLING = {"steps": 5, "guidance": 0.3, "safe_distance": 0.06, "gamma": 0.5, "e
             "guidance_iters": 2, "rigid": 0.6}
 
 
+def load_checkpoint(ckpt_dir: Path) -> tuple[ARFlow, dict]:
+    """(the model of <ckpt_dir>/arflow.pt in eval mode, the checkpoint: config, step, val)."""
+    return checkpoint.load(Path(ckpt_dir) / "arflow.pt", ARFlowConfig, ARFlow)
+
+
 def load(ckpt_dir: Path) -> ARFlow:
-    ck = torch.load(Path(ckpt_dir) / "arflow.pt", map_location="cpu", weights_only=True)
-    model = ARFlow(from_dict(ARFlowConfig, ck["config"]))
-    model.load_state_dict(ck["model"])
-    return model.eval()
+    return load_checkpoint(ckpt_dir)[0]
 
 
 def example_inputs(cfg: ARFlowConfig, batch: int = 2, frames: int = 7) -> tuple:
@@ -57,19 +58,13 @@ def example_inputs(cfg: ARFlowConfig, batch: int = 2, frames: int = 7) -> tuple:
 def export(ckpt_dir: Path, out: Path | None = None, sampling: dict | None = None) -> Path:
     out = Path(out or WEIGHTS)
     out.mkdir(parents=True, exist_ok=True)
-    model = load(ckpt_dir)
-    args = example_inputs(model.cfg)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torch.onnx.export(model, args, str(out / "arflow.onnx"),
-                          input_names=["x_t", "t", "actor", "text"], output_names=["x1"],
-                          dynamic_axes={"x_t": {0: "batch", 1: "frames"}, "t": {0: "batch"},
-                                        "actor": {0: "batch", 1: "frames"},
-                                        "text": {0: "batch"}, "x1": {0: "batch", 1: "frames"}},
-                          opset_version=OPSET, dynamo=False)
+    model, ck = load_checkpoint(ckpt_dir)
+    onnx_export.export_graph(model, example_inputs(model.cfg), out / "arflow.onnx", INPUTS, ["x1"],
+                             {"x_t": {0: "batch", 1: "frames"}, "t": {0: "batch"},
+                              "actor": {0: "batch", 1: "frames"}, "text": {0: "batch"},
+                              "x1": {0: "batch", 1: "frames"}})
     export_step(model, out / "arflow_step.onnx")
     shutil.copy(Path(ckpt_dir) / "normalizer.npz", out / "normalizer.npz")
-    ck = torch.load(Path(ckpt_dir) / "arflow.pt", map_location="cpu", weights_only=True)
     config = {"window": model.cfg.window, "pose_dim": POSE_DIM, "text_dim": TEXT_DIM,
               "text": model.cfg.text, "noise": model.cfg.noise, "model": ck["config"],
               "step": ck.get("step"), "val_loss": ck.get("val"),
@@ -83,7 +78,8 @@ def export(ckpt_dir: Path, out: Path | None = None, sampling: dict | None = None
     return out
 
 
-STEP_INPUTS = ["x_t", "t", "actor", "text", "pos", "past_k", "past_v", "mem_k", "mem_v"]
+INPUTS = ["x_t", "t", "actor", "text"]
+STEP_INPUTS = [*INPUTS, "pos", "past_k", "past_v", "mem_k", "mem_v"]
 STEP_OUTPUTS = ["x1", "new_k", "new_v", "new_mem_k", "new_mem_v"]
 
 
@@ -96,30 +92,19 @@ def step_inputs(cfg: ARFlowConfig, past: int = 3) -> tuple:
 
 
 def export_step(model: ARFlow, path: Path) -> None:
-    step = ARFlowStep(model).eval()
     cache_axes = {1: "batch", 3: "past"}
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torch.onnx.export(step, step_inputs(model.cfg), str(path), input_names=STEP_INPUTS,
-                          output_names=STEP_OUTPUTS,
-                          dynamic_axes={"x_t": {0: "batch"}, "t": {0: "batch"},
-                                        "actor": {0: "batch"}, "text": {0: "batch"},
-                                        **{n: cache_axes for n in STEP_INPUTS[5:]},
-                                        **{n: {1: "batch"} for n in STEP_OUTPUTS[1:]},
-                                        "x1": {0: "batch"}},
-                          opset_version=OPSET, dynamo=False)
+    onnx_export.export_graph(ARFlowStep(model), step_inputs(model.cfg), path, STEP_INPUTS,
+                             STEP_OUTPUTS, {"x_t": {0: "batch"}, "t": {0: "batch"},
+                                            "actor": {0: "batch"}, "text": {0: "batch"},
+                                            **{n: cache_axes for n in STEP_INPUTS[5:]},
+                                            **{n: {1: "batch"} for n in STEP_OUTPUTS[1:]},
+                                            "x1": {0: "batch"}})
 
 
 def check(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
     """Max |ONNX − torch| on a fresh input of another batch/length (dynamic axes); raises if > tol."""
-    import onnxruntime as ort
-
-    sess = ort.InferenceSession(str(path), providers=["CPUExecutionProvider"])
     args = example_inputs(model.cfg, batch=3, frames=min(11, model.cfg.window))
-    with torch.no_grad():
-        ref = model(*args).numpy()
-    got = sess.run(["x1"], dict(zip(["x_t", "t", "actor", "text"], (a.numpy() for a in args))))[0]
-    err = float(np.abs(got - ref).max())
+    err = onnx_export.max_error(model, args, path)
     if err > tol:
         raise RuntimeError(f"ONNX export differs from torch by {err:.2e}")
     return err
@@ -127,16 +112,8 @@ def check(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
 
 def check_step(model: ARFlow, path: Path, tol: float = 1e-3) -> float:
     """Max |ONNX − torch| of the one-frame graph, with an empty and a filled cache."""
-    import onnxruntime as ort
-
-    sess = ort.InferenceSession(str(path), providers=["CPUExecutionProvider"])
-    step, err = ARFlowStep(model).eval(), 0.0
-    for past in (0, 5):
-        args = step_inputs(model.cfg, past)
-        with torch.no_grad():
-            ref = step(*args)
-        got = sess.run(STEP_OUTPUTS, dict(zip(STEP_INPUTS, (a.numpy() for a in args))))
-        err = max(err, max(float(np.abs(g - r.numpy()).max()) for g, r in zip(got, ref)))
+    step = ARFlowStep(model)
+    err = max(onnx_export.max_error(step, step_inputs(model.cfg, past), path) for past in (0, 5))
     if err > tol:
         raise RuntimeError(f"one-frame ONNX export differs from torch by {err:.2e}")
     return err

@@ -1,24 +1,25 @@
 """Train ARFlow on the train split's pair windows (CPU, a wall-clock budget), keep the best
 checkpoint by validation x-prediction loss, then export ONNX + normalizer + card.
 
-    .venv/bin/python -m models.arflow.train                       # full run → var/arflow/, weights
-    .venv/bin/python -m models.arflow.train --tiny --steps 30 --out /tmp/af --no-export  # smoke
+    .venv/bin/python -m models.arflow                       # full run → var/arflow/, weights
+    .venv/bin/python -m models.arflow --tiny --steps 30 --out /tmp/af --no-export  # smoke
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import time
-from dataclasses import replace
+from dataclasses import asdict, replace
 from pathlib import Path
 
 import numpy as np
 import torch
 
 from interplay.motion import skeleton as sk
+from models.common import checkpoint
+from models.common.schedule import Budget, optimizer_step
 
-from .config import ARFlowConfig, TrainConfig, to_dict
+from .config import ARFlowConfig, TrainConfig
 from .data import PairSet, fit_stats, pair_set, save_stats
 from .model import ARFlow, flow_state, loss_terms
 
@@ -75,46 +76,46 @@ def train(cfg: ARFlowConfig, tc: TrainConfig, out: Path, train_set: PairSet, val
     parents = torch.tensor([max(p, 0) for p in sk.PARENTS])
     model = ARFlow(cfg)
     opt = torch.optim.AdamW(model.parameters(), lr=tc.lr, weight_decay=tc.weight_decay)
-    sched = torch.optim.lr_scheduler.LambdaLR(opt, lambda s: min(1.0, (s + 1) / tc.warmup) * max(
-        0.05, 0.5 * (1 + np.cos(np.pi * min(1.0, s / tc.steps)))))
+
+    def lr(s: int) -> float:
+        """Linear warm-up times a cosine down to 5 % over the steps."""
+        return tc.lr * (min(1.0, (s + 1) / tc.warmup)
+                        * max(0.05, 0.5 * (1 + np.cos(np.pi * min(1.0, s / tc.steps)))))
+
     gen = torch.Generator().manual_seed(tc.seed)
     n = len(tr["actor"])
-    history, best, start = [], float("inf"), time.time()
+    history, best, budget = [], float("inf"), Budget(tc.steps, tc.budget_s)
     first_loss = last_loss = None
     for step in range(tc.steps):
         idx = torch.randint(0, n, (tc.batch_size,), generator=gen)
         loss, terms = batch_loss(model, cfg, tr["actor"][idx], tr["reactor"][idx], tr["text"][idx],
                                  mean_t, std_t, parents, gen)
-        opt.zero_grad(set_to_none=True)
-        loss.backward()
-        torch.nn.utils.clip_grad_norm_(model.parameters(), 1.0)
-        opt.step()
-        sched.step()
+        optimizer_step(opt, lr(step), loss, model.parameters())
         first_loss = float(loss.detach()) if first_loss is None else first_loss
         last_loss = float(loss.detach())
-        done = step + 1 == tc.steps or time.time() - start > tc.budget_s
+        done = budget.done(step + 1)
         if (step + 1) % tc.eval_every == 0 or done:
             val = evaluate(model, cfg, va, mean_t, std_t, parents) if len(va["actor"]) else last_loss
             history.append({"step": step + 1, "train": last_loss, "val": val, **terms,
-                            "seconds": round(time.time() - start, 1)})
+                            "seconds": round(budget.elapsed(), 1)})
             log(json.dumps(history[-1]))
             if val < best:
                 best = val
-                torch.save({"model": model.state_dict(), "config": to_dict(cfg),
-                            "step": step + 1, "val": val}, out / "arflow.pt")
+                checkpoint.save(model, out / "arflow.pt", step=step + 1, val=val)
         if done:
             break
-    summary = {"steps": step + 1, "seconds": round(time.time() - start, 1), "best_val": best,
+    summary = {"steps": step + 1, "seconds": round(budget.elapsed(), 1), "best_val": best,
                "first_loss": first_loss, "last_loss": last_loss, "history": history,
                "train_windows": len(train_set), "val_windows": len(val_set),
                "parameters": sum(p.numel() for p in model.parameters()),
-               "train_config": to_dict(tc)}
+               "train_config": asdict(tc)}
     (out / "train_summary.json").write_text(json.dumps(summary, indent=1))
     return summary
 
 
-def main(argv: list[str] | None = None) -> dict:
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+def main(argv: list[str] | None = None, prog: str | None = None) -> dict:
+    ap = argparse.ArgumentParser(prog=prog, description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--out", type=Path, default=DEFAULT_OUT)
     ap.add_argument("--steps", type=int)
     ap.add_argument("--budget", type=float, help="wall-clock seconds")

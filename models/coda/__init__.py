@@ -1,8 +1,3 @@
 """CODA (paper 000, §3.1–3.3): a two-person CVQ-VAE with an interaction codebook (ICS) and
 commonsense losses (CCL), and a conditional masked transformer (CMT) over both people's
 pose tokens; trained with torch on CPU, exported to ONNX for `interplay.agents`."""
-
-import os
-
-# Passive OpenMP waits on a shared CPU (see models/spam/__init__.py); before torch loads.
-os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")

@@ -1,14 +1,16 @@
 """Train, choose sampling settings for, export and document CODA (`models/coda/pipeline.py`).
 
-  python -m models.coda --all [--scale 0.5]
+  python -m models.coda --all [--scale 0.5] [--early]
 """
 
 from __future__ import annotations
 
-import sys
+from models.coda.pipeline import main as pipeline
 
-import models.spam  # noqa: F401  (sets OpenMP's wait policy before torch loads)
-from models.coda.pipeline import main
+
+def main(argv: list[str] | None = None) -> None:
+    pipeline(argv, prog="python -m models.coda")
+
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    main()

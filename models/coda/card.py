@@ -152,8 +152,8 @@ def write_cards(n: dict, weights: Path) -> None:
         "text (B, 384) → logits (B, 2, n, K). ONNX vs torch max error: "
         f"{n['onnx_roundtrip_max_error']}.", "",
         "## Commands", "",
-        "    .venv/bin/python -m models.coda.train --all            # this card (part of make train)",
-        "    .venv/bin/python -m models.coda.train --all --scale 0.5",
+        "    .venv/bin/python -m models.coda --all            # this card (part of make train)",
+        "    .venv/bin/python -m models.coda --all --scale 0.5",
         "    .venv/bin/pytest -q tests/models/test_coda_model.py tests/models/test_coda_losses.py",
     ]
     (weights / "coda" / "MODEL_CARD.md").write_text("\n".join(lines) + "\n")

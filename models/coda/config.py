@@ -1,5 +1,6 @@
 """Frozen configs of CODA, scaled from the paper's (d' = 512, |C| = |P| = 1024, 6 blocks × 384)
-to ~3k training pair windows and a shared 2-core CPU. Checkpoints store asdict(cfg).
+to ~3k training pair windows and a shared 2-core CPU. Checkpoints store asdict(cfg)
+(`models.common.checkpoint`).
 
 Shapes: a person is (B, T, 66) joints (22 × xyz, metres) in the pair's canonical frame
 (first person's pelvis at the XZ origin facing +Z at frame 0), normalised by one mean/std
@@ -8,7 +9,7 @@ shared by both people; T = 4n frames ↔ n pose tokens per person.
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, fields
+from dataclasses import dataclass
 
 POSE_DIM = 66          # 22 joints × 3
 TEXT_DIM = 384         # MiniLM sentence embedding
@@ -79,12 +80,3 @@ class TrainConfig:
     seed: int = 0
     log_every: int = 50
 
-
-def from_dict(cls, d: dict):
-    """A config dataclass from a (possibly older) dict: unknown keys ignored."""
-    names = {f.name for f in fields(cls)}
-    return cls(**{k: v for k, v in d.items() if k in names})
-
-
-def to_dict(cfg) -> dict:
-    return asdict(cfg)

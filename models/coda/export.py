@@ -18,18 +18,18 @@ from __future__ import annotations
 
 import argparse
 import json
-import warnings
+from dataclasses import asdict
 from pathlib import Path
 
 import numpy as np
 import torch
 import torch.nn as nn
 
-from .cmt import CMT
-from .config import FPS, POSE_DIM, TEXT_DIM, CMTConfig, CVQConfig, from_dict, to_dict
-from .cvq import CVQVAE
+from models.common import checkpoint, onnx_export
 
-OPSET = 17
+from .cmt import CMT
+from .config import FPS, POSE_DIM, TEXT_DIM, CMTConfig, CVQConfig
+from .cvq import CVQVAE
 
 
 class Encode(nn.Module):
@@ -71,36 +71,17 @@ def example_inputs(k: int, n: int = 7, batch: int = 2) -> dict[str, tuple]:
 
 
 def export_graph(module: nn.Module, name: str, inputs: tuple, out_dir: Path) -> Path:
-    names_in, names_out, axes = _SPECS[name]
-    path = out_dir / f"{name}.onnx"
-    with torch.no_grad(), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torch.onnx.export(module.eval(), inputs, str(path), input_names=names_in,
-                          output_names=names_out, dynamic_axes=axes, opset_version=OPSET,
-                          dynamo=False)
-    return path
+    """<name>.onnx with the contract's input/output names and dynamic axes."""
+    return onnx_export.export_graph(module, inputs, out_dir / f"{name}.onnx", *_SPECS[name])
 
 
 def check_graphs(vq: CVQVAE, cmt: CMT, out_dir: Path, n: int = 9, batch: int = 3) -> float:
-    """Largest |torch − onnxruntime| over the three graphs at a size unlike the export's."""
-    import onnxruntime as ort
-
+    """Largest |torch − onnxruntime| over the three graphs at a size unlike the export's
+    (codes: the share that differ)."""
     inputs = example_inputs(vq.cfg.codes, n, batch)
     modules = {"encode": Encode(vq), "decode": Decode(vq), "cmt": cmt}
-    worst = 0.0
-    for name, module in modules.items():
-        sess = ort.InferenceSession(str(out_dir / f"{name}.onnx"), providers=["CPUExecutionProvider"])
-        feeds = {i.name: t.numpy() for i, t in zip(sess.get_inputs(), inputs[name])}
-        got = sess.run(None, feeds)
-        with torch.no_grad():
-            want = module.eval()(*inputs[name])
-        want = want if isinstance(want, tuple) else (want,)
-        for g, w in zip(got, want):
-            if g.dtype == np.int64:
-                worst = max(worst, float((g != w.numpy()).mean()))
-            else:
-                worst = max(worst, float(np.abs(g - w.numpy()).max()))
-    return worst
+    return max(onnx_export.max_error(module, inputs[name], out_dir / f"{name}.onnx")
+               for name, module in modules.items())
 
 
 def runtime_config(vq: CVQVAE, cmt: CMT, sampling: dict, trained: bool, extra: dict) -> dict:
@@ -109,7 +90,7 @@ def runtime_config(vq: CVQVAE, cmt: CMT, sampling: dict, trained: bool, extra: d
             "ics": vq.cfg.ics, "downsample": vq.cfg.downsample,
             "max_tokens": cmt.cfg.max_tokens, "mask_id": cmt.cfg.mask_id, "fps": FPS,
             "dim": POSE_DIM, "text_dim": TEXT_DIM, "sampling": sampling,
-            "sizes": {"cvq": to_dict(vq.cfg), "cmt": to_dict(cmt.cfg)}, **extra}
+            "sizes": {"cvq": asdict(vq.cfg), "cmt": asdict(cmt.cfg)}, **extra}
 
 
 def export_all(vq: CVQVAE, cmt: CMT, mean: np.ndarray, std: np.ndarray, out_dir: str | Path,
@@ -129,19 +110,16 @@ def export_all(vq: CVQVAE, cmt: CMT, mean: np.ndarray, std: np.ndarray, out_dir:
     return check_graphs(vq, cmt, out_dir)
 
 
+KINDS = {"cvq": (CVQConfig, CVQVAE), "cmt": (CMTConfig, CMT)}   # the checkpoints' "kind"
+
+
 def save(model: CVQVAE | CMT, path: str | Path, **extra) -> None:
-    kind = "cvq" if isinstance(model, CVQVAE) else "cmt"
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    torch.save({"model": model.state_dict(), "config": to_dict(model.cfg), "kind": kind, **extra},
-               path)
+    checkpoint.save_kind(model, path, KINDS, **extra)
 
 
 def load(path: str | Path) -> CVQVAE | CMT:
-    ck = torch.load(path, map_location="cpu", weights_only=True)
-    cls, cfg_cls = {"cvq": (CVQVAE, CVQConfig), "cmt": (CMT, CMTConfig)}[ck["kind"]]
-    model = cls(from_dict(cfg_cls, ck["config"]))
-    model.load_state_dict(ck["model"])
-    return model.eval()
+    """The network saved at path, in eval mode."""
+    return checkpoint.load_kind(path, KINDS, "CODA")
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -1,4 +1,4 @@
-"""`python -m models.coda.train --all [--scale S]`: CODA end to end (part of `make train`).
+"""`python -m models.coda --all [--scale S]`: CODA end to end (part of `make train`).
 
 Stages (seconds at scale 1; the 2-core machine is shared, so steps follow time):
   data        pair windows (train mirrored, both role orders), normaliser, text embeddings
@@ -157,8 +157,9 @@ def _as_is(data) -> list[int]:
     return list(range(0, len(data), 2))
 
 
-def main(argv: list[str] | None = None) -> None:
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+def main(argv: list[str] | None = None, prog: str | None = None) -> None:
+    ap = argparse.ArgumentParser(prog=prog, description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--all", action="store_true", help="train, evaluate, export every variant")
     ap.add_argument("--scale", type=float, default=1.0, help="multiply every budget")
     ap.add_argument("--early", action="store_true",

@@ -1,9 +1,10 @@
 """Training loops of CODA: the CVQ-VAE on pair windows (eq. 3 + CCL), then the CMT on the
 pose tokens of both people. Budgets are wall-clock seconds (the CPU is shared) or steps,
-whichever ends first; learning rate: linear warm-up, cosine to 10 %.
+whichever ends first; learning rate: linear warm-up, cosine to 10 % (`models.common.schedule`,
+as SPAM's).
 
-  python -m models.coda.train --all [--scale S]     # everything CODA (part of make train)
-  python -m models.coda.train --all --scale 0.1 --early   # a short run, "trained": false
+  python -m models.coda --all [--scale S]           # everything CODA (part of make train)
+  python -m models.coda --all --scale 0.1 --early   # a short run, "trained": false
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ import numpy as np
 import torch
 import torch.nn.functional as F
 
-from models.spam.train import History, Schedule  # the same budgets and schedule as SPAM
+from models.common.schedule import History, Schedule, optimizer_step
 
 from .ccl import ccl
 from .cmt import CMT
@@ -53,15 +54,6 @@ def cvq_loss(model: CVQVAE, loss_cfg: LossConfig, joints: Joints, xa, xb):
     return total, {k: float(v.detach()) for k, v in terms.items()}
 
 
-def _step(opt, sched: Schedule, step: int, loss: torch.Tensor, params) -> None:
-    for g in opt.param_groups:
-        g["lr"] = sched.lr(step)
-    opt.zero_grad(set_to_none=True)
-    loss.backward()
-    torch.nn.utils.clip_grad_norm_(params, 1.0)
-    opt.step()
-
-
 def train_cvq(cfg: CVQConfig, loss_cfg: LossConfig, tc: TrainConfig, data: PairTensors,
               joints: Joints, log=print, name: str = "cvq") -> tuple[CVQVAE, History]:
     torch.manual_seed(tc.seed)
@@ -73,7 +65,7 @@ def train_cvq(cfg: CVQConfig, loss_cfg: LossConfig, tc: TrainConfig, data: PairT
     while not sched.done(step):
         idx = torch.randint(0, len(data), (tc.batch,), generator=gen)
         loss, terms = cvq_loss(model, loss_cfg, joints, data.a[idx], data.b[idx])
-        _step(opt, sched, step, loss, params)
+        optimizer_step(opt, sched.lr(step), loss, params)
         step += 1
         if step % tc.log_every == 0 or step == 1:
             hist.rows.append({"step": step, "t": round(sched.elapsed(), 1), **terms})
@@ -127,7 +119,7 @@ def train_cmt(cfg: CMTConfig, tc: TrainConfig, codes: torch.Tensor, text: torch.
     while not sched.done(step):
         idx = torch.randint(0, len(codes), (tc.batch,), generator=gen)
         loss, acc = cmt_loss(model, codes[idx], text[idx], gen, tc.cond_drop)
-        _step(opt, sched, step, loss, params)
+        optimizer_step(opt, sched.lr(step), loss, params)
         step += 1
         if step % tc.log_every == 0 or step == 1:
             hist.rows.append({"step": step, "t": round(sched.elapsed(), 1), "ce": float(loss.detach()),

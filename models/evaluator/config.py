@@ -1,11 +1,12 @@
 """Frozen config of the evaluator (model sizes and the training budget).
 
-Checkpoints store {"model": state_dict, "config": asdict(cfg)}; `EvaluatorConfig.from_dict`
-reads them back (unknown keys are an error, missing keys take the defaults)."""
+Checkpoints store {"model": state_dict, "config": asdict(cfg)}; `export.load_checkpoint`
+reads them back (`models.common.checkpoint`, strict: unknown keys are an error, missing keys
+take the defaults)."""
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, fields
+from dataclasses import dataclass
 
 FEATURE_DIM = 239          # interplay.motion.features.FEATURE_DIM
 TEXT_DIM = 384             # MiniLM sentence embedding (interplay.text.encoder.DIM)
@@ -44,14 +45,3 @@ class EvaluatorConfig:
     eval_every: int = 50
     seed: int = 0
     threads: int = 1             # 2 threads thrash on the shared 2-core machine (1 is 2× faster)
-
-    @classmethod
-    def from_dict(cls, d: dict) -> "EvaluatorConfig":
-        names = {f.name for f in fields(cls)}
-        unknown = set(d) - names
-        if unknown:
-            raise ValueError(f"unknown evaluator config keys: {sorted(unknown)}")
-        return cls(**d)
-
-    def to_dict(self) -> dict:
-        return asdict(self)

@@ -5,12 +5,11 @@
 
 Writes motion_encoder.onnx (dynamic batch and length), text_proj.npz, normalizer.npz,
 config.json, and MODEL_CARD.md with retrieval accuracy on the val and test splits measured
-through the runtime (`interplay.review.evaluator.Evaluator`).
+through the runtime (`interplay.review.evaluator.EvaluatorRuntime`).
 """
 
 from __future__ import annotations
 
-import argparse
 import json
 from pathlib import Path
 
@@ -19,24 +18,24 @@ import torch
 
 from interplay.eval.metrics import confidence, r_precision
 from interplay.eval.testset import split_samples
-from interplay.motion.clip import DATA_DIR, default_clips
+from interplay.motion.clip import default_clips
 from interplay.motion.features import Normalizer
-from interplay.review.evaluator import Evaluator as Runtime
+from interplay.review.evaluator import EvaluatorRuntime as Runtime
+from models.common import checkpoint, onnx_export
 
+from .cli import export_command
 from .config import EvaluatorConfig
 from .model import Evaluator
 from .train import DEFAULT_OUT
 
 ROOT = Path(__file__).resolve().parents[2]
 WEIGHTS = ROOT / "models" / "weights" / "evaluator"
-OPSET = 17
 
 
 def load_checkpoint(path: str | Path) -> tuple[Evaluator, dict]:
-    ckpt = torch.load(path, map_location="cpu", weights_only=False)
-    model = Evaluator(EvaluatorConfig.from_dict(ckpt["config"]))
-    model.load_state_dict(ckpt["model"])
-    return model.eval(), ckpt
+    """(the evaluator saved at path, in eval mode; the checkpoint with its normalizer,
+    history and data counts)."""
+    return checkpoint.load(path, EvaluatorConfig, Evaluator, strict=True, weights_only=False)
 
 
 def export_onnx(model: Evaluator, path: Path) -> None:
@@ -44,10 +43,9 @@ def export_onnx(model: Evaluator, path: Path) -> None:
     cfg = model.cfg
     x = torch.randn(2, 4 * cfg.patch, cfg.feature_dim)
     mask = torch.ones(2, 4 * cfg.patch, dtype=torch.bool)
-    torch.onnx.export(model.motion, (x, mask), str(path), input_names=["motion", "mask"],
-                      output_names=["embedding"], opset_version=OPSET, dynamo=False,
-                      dynamic_axes={"motion": {0: "batch", 1: "frames"},
-                                    "mask": {0: "batch", 1: "frames"}, "embedding": {0: "batch"}})
+    onnx_export.export_graph(model.motion, (x, mask), path, ["motion", "mask"], ["embedding"],
+                             {"motion": {0: "batch", 1: "frames"},
+                              "mask": {0: "batch", 1: "frames"}, "embedding": {0: "batch"}})
 
 
 def save_text_proj(model: Evaluator, path: Path) -> None:
@@ -57,40 +55,28 @@ def save_text_proj(model: Evaluator, path: Path) -> None:
              fc2_w=t.fc2.weight.detach().numpy().T, fc2_b=t.fc2.bias.detach().numpy())
 
 
-def export_cli(argv, description: str, default_ckpt: Path, default_out: Path, export_fn,
-               load_fn, runtime_cls) -> tuple:
-    """The export command of an evaluator (this one and the pair evaluator): flags --ckpt,
-    --out, --data-dir, --no-card; writes the runtime files, loads them back and checks ONNX
-    against torch. Returns (args, checkpoint, torch model, runtime, max |Δ|)."""
-    ap = argparse.ArgumentParser(description=description)
-    ap.add_argument("--ckpt", default=str(default_ckpt))
-    ap.add_argument("--out", default=str(default_out))
-    ap.add_argument("--data-dir", default=str(DATA_DIR))
-    ap.add_argument("--no-card", action="store_true", help="skip the measurements and card")
-    args = ap.parse_args(argv)
-    ckpt = export_fn(args.ckpt, args.out)
-    model, _ = load_fn(args.ckpt)
-    runtime = runtime_cls.load(args.out)
-    err = onnx_matches_torch(model, runtime)
-    print(f"wrote {args.out}; ONNX vs torch max |Δ| = {err:.2e}")
-    return args, ckpt, model, runtime, err
+def export_towers(model: Evaluator, out: Path, **config) -> None:
+    """The files both evaluators' runtimes read, bar the normalizer: motion_encoder.onnx,
+    text_proj.npz and config.json (the towers' sizes, then `config`, then the text encoder)."""
+    cfg = model.cfg
+    out.mkdir(parents=True, exist_ok=True)
+    export_onnx(model, out / "motion_encoder.onnx")
+    save_text_proj(model, out / "text_proj.npz")
+    (out / "config.json").write_text(json.dumps({
+        "embed_dim": cfg.embed_dim, "max_frames": cfg.max_frames, "patch": cfg.patch,
+        "feature_dim": cfg.feature_dim, "text_dim": cfg.text_dim, "temperature": cfg.temperature,
+        **config, "text_encoder": "all-MiniLM-L6-v2 int8 (interplay.text.encoder)"},
+        indent=1) + "\n")
 
 
 def export(ckpt_path: str | Path, out: str | Path) -> dict:
     """Write the runtime files into `out`; returns the checkpoint (for the card)."""
     model, ckpt = load_checkpoint(ckpt_path)
-    cfg = model.cfg
     out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    export_onnx(model, out / "motion_encoder.onnx")
-    save_text_proj(model, out / "text_proj.npz")
+    export_towers(model, out)
     n = ckpt["normalizer"]
     Normalizer(np.asarray(n["mean"]), np.asarray(n["std"]),
                {k: v for k, v in n.items() if k not in ("mean", "std")}).save(out / "normalizer.npz")
-    (out / "config.json").write_text(json.dumps({
-        "embed_dim": cfg.embed_dim, "max_frames": cfg.max_frames, "patch": cfg.patch,
-        "feature_dim": cfg.feature_dim, "text_dim": cfg.text_dim, "temperature": cfg.temperature,
-        "text_encoder": "all-MiniLM-L6-v2 int8 (interplay.text.encoder)"}, indent=1) + "\n")
     return ckpt
 
 
@@ -185,9 +171,9 @@ R-precision here measures recognising the action family more than fine wording.
 
 
 def main(argv: list[str] | None = None) -> int:
-    args, ckpt, model, runtime, err = export_cli(
+    args, ckpt, model, runtime, err = export_command(
         argv, __doc__.split("\n")[0], DEFAULT_OUT / "evaluator.pt", WEIGHTS, export,
-        load_checkpoint, Runtime)
+        load_checkpoint, Runtime, onnx_matches_torch)
     if not args.no_card:
         table = retrieval_table(runtime, default_clips(args.data_dir))
         params = sum(p.numel() for p in model.parameters())

@@ -1,4 +1,5 @@
-"""The evaluator's two towers and its contrastive loss (TMR-style, deterministic embeddings).
+"""The evaluator's two towers (TMR-style, deterministic embeddings); the loss is
+`models.common.contrastive.info_nce`.
 
   motion (B, T, 239) normalised features, mask (B, T) bool (True = a real frame), T a multiple
   of `patch` (pad with masked frames)
@@ -113,17 +114,3 @@ class Evaluator(nn.Module):
         self.cfg = cfg
         self.motion = MotionEncoder(cfg)
         self.text = TextProjection(cfg)
-
-
-def info_nce(motion: torch.Tensor, text: torch.Tensor, not_negative: torch.Tensor,
-             temperature: float) -> torch.Tensor:
-    """Symmetric InfoNCE over a batch of matched (motion_i, text_i) unit embeddings (B, E).
-
-    not_negative (B, B) bool marks off-diagonal pairs that must not count as negatives (same
-    text, or texts more similar than the false-negative threshold); they are dropped from both
-    softmaxes. The diagonal (the positives) is always kept."""
-    logits = motion @ text.T / temperature                             # (B, B): motion × text
-    eye = torch.eye(len(logits), dtype=torch.bool, device=logits.device)
-    logits = logits.masked_fill(not_negative & ~eye, float("-inf"))
-    target = torch.arange(len(logits), device=logits.device)
-    return 0.5 * (F.cross_entropy(logits, target) + F.cross_entropy(logits.T, target))

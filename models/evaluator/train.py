@@ -5,15 +5,14 @@
 
 The best checkpoint by validation R-precision (pool 32, averaged over 10 pools; ties broken by
 the mean cosine margin of the true text over the best other text) is kept.
-Then `python -m models.evaluator.export` writes the ONNX/npz files and the model card.
+Then `python -m models.evaluator.export` writes the ONNX/npz files and the model card
+(`python -m models.evaluator` runs both).
 """
 
 from __future__ import annotations
 
-import argparse
-import math
 import time
-from dataclasses import replace
+from dataclasses import asdict
 from pathlib import Path
 
 import numpy as np
@@ -21,13 +20,16 @@ import torch
 
 from interplay.eval.metrics import r_precision
 from interplay.eval.testset import split_samples
-from interplay.motion.clip import DATA_DIR, default_clips
+from interplay.motion.clip import default_clips
 from interplay.motion.features import Normalizer, encode
 from interplay.text.encoder import get_encoder
+from models.common.contrastive import info_nce
+from models.common.schedule import Budget, optimizer_step, warmup_cosine
 
+from .cli import train_command
 from .config import EvaluatorConfig
 from .data import TextTable, Track, build_tracks, pad, sample_batch, track_weights
-from .model import Evaluator, info_nce
+from .model import Evaluator
 
 ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_OUT = ROOT / "var" / "evaluator"
@@ -70,11 +72,34 @@ def split_set(clips, split: str, normalizer: Normalizer, cfg: EvaluatorConfig):
     return feats, get_encoder().encode(texts), texts
 
 
-def lr_at(step: int, cfg: EvaluatorConfig, total: int) -> float:
-    if step < cfg.warmup:
-        return cfg.lr * (step + 1) / cfg.warmup
-    frac = min(1.0, (step - cfg.warmup) / max(1, total - cfg.warmup))
-    return cfg.lr * (0.1 + 0.9 * 0.5 * (1 + math.cos(math.pi * frac)))
+def fit(model: Evaluator, cfg, batch_loss, validate, log=print) -> dict:
+    """The loop both evaluators train with (cfg: this config or the pair evaluator's): AdamW,
+    `warmup_cosine` learning rate, gradients clipped to 1, for cfg.steps or cfg.seconds. Every
+    eval_every steps (and at the last) `validate(model)` gives (score, history fields, log
+    text), and the weights of the best score (higher is better; tuples break ties) are kept.
+    Returns {"model": those weights, "history", "losses", "steps", "train_seconds"}."""
+    opt = torch.optim.AdamW(model.parameters(), lr=cfg.lr, weight_decay=cfg.weight_decay)
+    best, best_state, history, losses = None, None, [], []
+    budget, step = Budget(cfg.steps, cfg.seconds), 0
+    while not budget.done(step):
+        model.train()
+        loss = batch_loss(model)
+        optimizer_step(opt, warmup_cosine(step, cfg.lr, cfg.warmup, cfg.steps), loss,
+                       model.parameters())
+        losses.append(loss.item())
+        step += 1
+        if step % cfg.eval_every == 0 or step == cfg.steps:
+            score, fields, text = validate(model)
+            history.append({"step": step, "seconds": round(budget.elapsed(), 1),
+                            "loss": float(np.mean(losses[-cfg.eval_every:])), **fields})
+            log(f"step {step} {history[-1]['seconds']} s loss {history[-1]['loss']:.3f} {text}")
+            if best is None or score > best:
+                best, best_state = score, {k: v.clone() for k, v in model.state_dict().items()}
+                history[-1]["best"] = True
+    if best_state is None:                                             # fewer steps than eval_every
+        best_state = model.state_dict()
+    return {"model": best_state, "history": history, "losses": losses, "steps": step,
+            "train_seconds": round(budget.elapsed(), 1)}
 
 
 def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
@@ -97,15 +122,9 @@ def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
     log(f"{len(tracks)} tracks ({sum(len(t.features) for t in tracks)} frames), "
         f"{len(table.texts)} texts, {len(val[0])} val windows; setup {time.time() - start:.1f} s")
 
-    model = Evaluator(cfg)
-    opt = torch.optim.AdamW(model.parameters(), lr=cfg.lr, weight_decay=cfg.weight_decay)
     text_table = torch.from_numpy(text_raw)
-    best, best_state, history, losses = (-1.0, -np.inf), None, [], []
-    t0, step = time.time(), 0
-    while step < cfg.steps and time.time() - t0 < cfg.seconds:
-        model.train()
-        for g in opt.param_groups:
-            g["lr"] = lr_at(step, cfg, cfg.steps)
+
+    def batch_loss(model: Evaluator) -> torch.Tensor:
         windows, text_ids = sample_batch(tracks, weights, cfg.batch_size, cfg.min_frames,
                                          cfg.max_frames, rng, cfg.prompt_share)
         x, mask = pad(windows, cfg.patch)
@@ -114,61 +133,25 @@ def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
         m_emb = model.motion(x, torch.from_numpy(mask))
         t_emb = model.text(text_table[text_ids])
         nn_mask = torch.from_numpy(not_negative[np.ix_(text_ids, text_ids)])
-        loss = info_nce(m_emb, t_emb, nn_mask, cfg.temperature)
-        opt.zero_grad()
-        loss.backward()
-        torch.nn.utils.clip_grad_norm_(model.parameters(), 1.0)
-        opt.step()
-        losses.append(loss.item())
-        step += 1
-        if step % cfg.eval_every == 0 or step == cfg.steps:
-            rp, margin = retrieval(model, *val)
-            score = (round(float(rp.mean()), 6), margin)
-            history.append({"step": step, "seconds": round(time.time() - t0, 1),
-                            "loss": float(np.mean(losses[-cfg.eval_every:])),
-                            "val_r_precision": [round(float(v), 4) for v in rp],
-                            "val_margin": round(margin, 4)})
-            log(f"step {step} {history[-1]['seconds']} s loss {history[-1]['loss']:.3f} "
+        return info_nce(m_emb, t_emb, nn_mask, cfg.temperature)
+
+    def validate(model: Evaluator) -> tuple:
+        rp, margin = retrieval(model, *val)
+        return ((round(float(rp.mean()), 6), margin),
+                {"val_r_precision": [round(float(v), 4) for v in rp], "val_margin": round(margin, 4)},
                 f"val R@1/2/3 {rp[0]:.3f} {rp[1]:.3f} {rp[2]:.3f} margin {margin:.3f}")
-            if score > best:
-                best, best_state = score, {k: v.clone() for k, v in model.state_dict().items()}
-                history[-1]["best"] = True
-    if best_state is None:                                             # fewer steps than eval_every
-        best_state = model.state_dict()
-    return {"model": best_state, "config": cfg.to_dict(),
+
+    run = fit(Evaluator(cfg), cfg, batch_loss, validate, log)
+    return {"model": run.pop("model"), "config": asdict(cfg),
             "normalizer": {"mean": normalizer.mean, "std": normalizer.std, **normalizer.meta},
-            "history": history, "losses": losses, "steps": step,
-            "train_seconds": round(time.time() - t0, 1),
+            **run,
             "data": {"tracks": len(tracks), "frames": int(sum(len(t.features) for t in tracks)),
                      "texts": len(table.texts),
                      "clips": sum(c.split == "train" and not c.synthetic for c in clips)}}
 
 
-def run_cli(argv: list[str] | None, description: str, configs: tuple, train_fn, default_out: Path,
-            filename: str) -> int:
-    """The train command of an evaluator (this one and the pair evaluator): configs is
-    (full, tiny) config; flags --out, --data-dir, --steps, --seconds, --seed, --tiny."""
-    ap = argparse.ArgumentParser(description=description)
-    ap.add_argument("--out", default=str(default_out), help="checkpoint directory")
-    ap.add_argument("--data-dir", default=str(DATA_DIR))
-    ap.add_argument("--steps", type=int)
-    ap.add_argument("--seconds", type=float, help="wall-clock budget")
-    ap.add_argument("--seed", type=int)
-    ap.add_argument("--tiny", action="store_true", help="a tiny model (smoke runs)")
-    args = ap.parse_args(argv)
-    cfg = configs[1] if args.tiny else configs[0]
-    cfg = replace(cfg, **{k: v for k, v in (("steps", args.steps), ("seconds", args.seconds),
-                                             ("seed", args.seed)) if v is not None})
-    ckpt = train_fn(cfg, default_clips(args.data_dir))
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    torch.save(ckpt, out / filename)
-    print(f"wrote {out / filename}: {ckpt['steps']} steps in {ckpt['train_seconds']} s")
-    return 0
-
-
 def main(argv: list[str] | None = None) -> int:
-    return run_cli(argv, __doc__.split("\n")[0], (EvaluatorConfig(), EvaluatorConfig(**TINY)),
+    return train_command(argv, __doc__.split("\n")[0], (EvaluatorConfig(), EvaluatorConfig(**TINY)),
                    train, DEFAULT_OUT, "evaluator.pt")
 
 

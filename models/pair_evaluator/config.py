@@ -2,11 +2,13 @@
 
 The motion tower and text projection are the single-person evaluator's modules
 (`models.evaluator.model`), which read only the size fields below, so this config is passed to
-them directly. Checkpoints store {"model": state_dict, "config": asdict(cfg)}."""
+them directly. Checkpoints store {"model": state_dict, "config": asdict(cfg)};
+`export.load_checkpoint` reads them back (`models.common.checkpoint`, strict: unknown keys are
+an error, lists become tuples)."""
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, fields
+from dataclasses import dataclass
 
 from interplay.review.pair_evaluator import PAIR_FEATURE_DIM
 
@@ -50,14 +52,3 @@ class PairEvaluatorConfig:
     eval_every: int = 100
     seed: int = 0
     threads: int = 1              # 2 threads thrash on the shared 2-core machine
-
-    @classmethod
-    def from_dict(cls, d: dict) -> "PairEvaluatorConfig":
-        names = {f.name for f in fields(cls)}
-        unknown = set(d) - names
-        if unknown:
-            raise ValueError(f"unknown pair evaluator config keys: {sorted(unknown)}")
-        return cls(**{k: tuple(v) if isinstance(v, list) else v for k, v in d.items()})
-
-    def to_dict(self) -> dict:
-        return asdict(self)

@@ -15,12 +15,13 @@ import json
 from pathlib import Path
 
 import numpy as np
-import torch
 
 from interplay.eval.metrics import fid
 from interplay.motion.clip import default_clips
 from interplay.review.pair_evaluator import PairEvaluator
-from models.evaluator.export import export_cli, export_onnx, save_text_proj
+from models.common import checkpoint
+from models.evaluator.cli import export_command
+from models.evaluator.export import export_towers, onnx_matches_torch
 from models.evaluator.model import Evaluator
 
 from .card import model_card
@@ -34,27 +35,17 @@ WINDOW, STRIDE = 40, 20          # as interplay eval-react's test windows
 
 
 def load_checkpoint(path: str | Path) -> tuple[Evaluator, dict]:
-    ckpt = torch.load(path, map_location="cpu", weights_only=False)
-    model = Evaluator(PairEvaluatorConfig.from_dict(ckpt["config"]))
-    model.load_state_dict(ckpt["model"])
-    return model.eval(), ckpt
+    """(the pair evaluator saved at path, in eval mode; the checkpoint)."""
+    return checkpoint.load(path, PairEvaluatorConfig, Evaluator, strict=True, weights_only=False)
 
 
 def export(ckpt_path: str | Path, out: str | Path) -> dict:
     """Write the runtime files into `out`; returns the checkpoint."""
     model, ckpt = load_checkpoint(ckpt_path)
-    cfg = model.cfg
     out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    export_onnx(model, out / "motion_encoder.onnx")
-    save_text_proj(model, out / "text_proj.npz")
+    export_towers(model, out, kinds=ckpt["kinds"], prompts=ckpt["prompts"])
     np.savez(out / "normalizer.npz", mean=np.asarray(ckpt["normalizer"]["mean"], np.float32),
              std=np.asarray(ckpt["normalizer"]["std"], np.float32))
-    (out / "config.json").write_text(json.dumps({
-        "embed_dim": cfg.embed_dim, "max_frames": cfg.max_frames, "patch": cfg.patch,
-        "feature_dim": cfg.feature_dim, "text_dim": cfg.text_dim, "temperature": cfg.temperature,
-        "kinds": ckpt["kinds"], "prompts": ckpt["prompts"],
-        "text_encoder": "all-MiniLM-L6-v2 int8 (interplay.text.encoder)"}, indent=1) + "\n")
     return ckpt
 
 
@@ -112,9 +103,9 @@ _NO_NORM = (np.zeros(1, np.float32), np.ones(1, np.float32))
 
 
 def main(argv: list[str] | None = None) -> int:
-    args, ckpt, model, ev, err = export_cli(
+    args, ckpt, model, ev, err = export_command(
         argv, __doc__.split("\n")[0], DEFAULT_OUT / "pair_evaluator.pt", WEIGHTS, export,
-        load_checkpoint, PairEvaluator)
+        load_checkpoint, PairEvaluator, onnx_matches_torch)
     if not args.no_card:
         clips = default_clips(args.data_dir)
         metrics = {"onnx_error": err,

@@ -9,22 +9,25 @@ where the text → motion direction also ranks the text's own window above `brok
 pairs (displaced / time-shifted / other partner), so the embedding encodes whether the two
 people belong together, not only what each does. The checkpoint kept is the best by
 validation kind accuracy (ties: the mean cosine margin of a real window over its displaced
-copy against its own kind's texts). Then `python -m models.pair_evaluator.export`.
+copy against its own kind's texts). Then `python -m models.pair_evaluator.export`
+(`python -m models.pair_evaluator` runs both).
 """
 
 from __future__ import annotations
 
 import time
+from dataclasses import asdict
 from pathlib import Path
 
 import numpy as np
 import torch
-import torch.nn.functional as F
 
 from interplay.motion.clip import default_clips
 from interplay.text.encoder import get_encoder
+from models.common.contrastive import info_nce
+from models.evaluator.cli import train_command
 from models.evaluator.model import Evaluator
-from models.evaluator.train import lr_at, run_cli
+from models.evaluator.train import fit
 
 from .config import PairEvaluatorConfig
 from .data import PairSet, broken_batch, build_set, displaced, raw_features
@@ -33,19 +36,6 @@ ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_OUT = ROOT / "var" / "pair_evaluator"
 TINY = dict(d_model=32, layers=1, heads=2, text_hidden=64, embed_dim=16, batch_size=24,
             broken=8, eval_every=20)
-
-
-def loss_fn(m: torch.Tensor, t: torch.Tensor, mb: torch.Tensor, same: torch.Tensor,
-            temperature: float) -> torch.Tensor:
-    """m (B, E) windows, t (B, E) their texts, mb (K, E) broken windows, same (B, B) bool
-    same kind (not negatives). motion → text over the batch's texts; text → motion over the
-    batch's windows and every broken one."""
-    eye = torch.eye(len(m), dtype=torch.bool)
-    logits = (m @ t.T / temperature).masked_fill(same & ~eye, float("-inf"))
-    extra = t @ mb.T / temperature                                       # (B, K)
-    target = torch.arange(len(m))
-    return 0.5 * (F.cross_entropy(logits, target)
-                  + F.cross_entropy(torch.cat([logits.T, extra], dim=1), target))
 
 
 def kind_texts(data: PairSet) -> tuple[list[str], np.ndarray]:
@@ -102,15 +92,9 @@ def train(cfg: PairEvaluatorConfig, clips=None, log=print) -> dict:
     log(f"{len(data)} train windows of {len(data.kinds)} kinds {data.kinds}, {len(texts)} texts, "
         f"{len(val)} val windows; setup {time.time() - start:.1f} s")
 
-    model = Evaluator(cfg)
-    opt = torch.optim.AdamW(model.parameters(), lr=cfg.lr, weight_decay=cfg.weight_decay)
     text_table = torch.from_numpy(text_raw)
-    best, best_state, history, losses = (-1.0, -np.inf), None, [], []
-    t0, step = time.time(), 0
-    while step < cfg.steps and time.time() - t0 < cfg.seconds:
-        model.train()
-        for g in opt.param_groups:
-            g["lr"] = lr_at(step, cfg, cfg.steps)
+
+    def batch_loss(model: Evaluator) -> torch.Tensor:
         kinds = rng.integers(len(by_kind), size=cfg.batch_size)          # kinds equally often
         idx = np.array([rng.choice(by_kind[k]) for k in kinds])
         length = int(rng.integers(cfg.min_frames // cfg.patch, cfg.window // cfg.patch + 1)) * cfg.patch
@@ -123,38 +107,28 @@ def train(cfg: PairEvaluatorConfig, clips=None, log=print) -> dict:
         emb = model.motion(x, torch.ones(x.shape[:2], dtype=torch.bool))
         text_ids = np.array([rng.choice(np.flatnonzero(owner == k)) for k in data.kind[idx]])
         same = torch.from_numpy(data.kind[idx][:, None] == data.kind[idx][None, :])
-        loss = loss_fn(emb[:len(idx)], model.text(text_table[text_ids]), emb[len(idx):], same,
-                       cfg.temperature)
-        opt.zero_grad()
-        loss.backward()
-        torch.nn.utils.clip_grad_norm_(model.parameters(), 1.0)
-        opt.step()
-        losses.append(loss.item())
-        step += 1
-        if step % cfg.eval_every == 0 or step == cfg.steps:
-            acc, margin = validate(model, val, text_raw, owner, val_broken)
-            history.append({"step": step, "seconds": round(time.time() - t0, 1),
-                            "loss": float(np.mean(losses[-cfg.eval_every:])),
-                            "val_kind_accuracy": round(acc, 4), "val_displaced_margin": round(margin, 4)})
-            log(f"step {step} {history[-1]['seconds']} s loss {history[-1]['loss']:.3f} "
+        # same-kind windows are not negatives; the broken ones are negatives of every text
+        return info_nce(emb[:len(idx)], model.text(text_table[text_ids]), same, cfg.temperature,
+                        text_negatives=emb[len(idx):])
+
+    def check(model: Evaluator) -> tuple:
+        acc, margin = validate(model, val, text_raw, owner, val_broken)
+        return ((round(acc, 3), margin),
+                {"val_kind_accuracy": round(acc, 4), "val_displaced_margin": round(margin, 4)},
                 f"val kind acc {acc:.3f} displaced margin {margin:.3f}")
-            if (round(acc, 3), margin) > best:
-                best, best_state = (round(acc, 3), margin), {k: v.clone() for k, v in model.state_dict().items()}
-                history[-1]["best"] = True
-    if best_state is None:
-        best_state = model.state_dict()
-    return {"model": best_state, "config": cfg.to_dict(),
+
+    run = fit(Evaluator(cfg), cfg, batch_loss, check, log)
+    return {"model": run.pop("model"), "config": asdict(cfg),
             "normalizer": {"mean": norm[0], "std": norm[1]}, "kinds": data.kinds,
-            "prompts": data.prompts, "history": history, "losses": losses, "steps": step,
-            "train_seconds": round(time.time() - t0, 1),
+            "prompts": data.prompts, **run,
             "data": {"windows": len(data), "val_windows": len(val), "texts": len(texts),
                      "clips": len({c.id for c in clips if c.split == "train" and len(c.people) == 2})}}
 
 
 def main(argv: list[str] | None = None) -> int:
-    return run_cli(argv, __doc__.split("\n")[0],
-                   (PairEvaluatorConfig(), PairEvaluatorConfig(**TINY)), train, DEFAULT_OUT,
-                   "pair_evaluator.pt")
+    return train_command(argv, __doc__.split("\n")[0],
+                         (PairEvaluatorConfig(), PairEvaluatorConfig(**TINY)), train, DEFAULT_OUT,
+                         "pair_evaluator.pt")
 
 
 if __name__ == "__main__":

@@ -9,8 +9,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import models.spam  # noqa: F401  (sets OpenMP's wait policy before torch loads)
-
 
 def main(argv: list[str] | None = None) -> None:
     import argparse

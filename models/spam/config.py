@@ -2,12 +2,12 @@
 masked transformers, plus the training budgets. Sizes are scaled down from the paper (6 × 512
 codes of 128 dims, 9 layers × 512 wide) to ~30k training frames and a 2-core CPU.
 
-Checkpoints store {"model": state_dict, "config": asdict(cfg)}; `from_dict` reads them back.
+Checkpoints store {"model": state_dict, "config": asdict(cfg)} (`models.common.checkpoint`).
 """
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, fields
+from dataclasses import asdict, dataclass
 
 FEATURE_DIM = 239          # interplay.motion.features.FEATURE_DIM
 TEXT_DIM = 384             # MiniLM sentence embedding
@@ -87,12 +87,6 @@ class SamplingDefaults:
     steps: int = 10
     temperature: float = 1.0
     topk_ratio: float = 0.9
-
-
-def from_dict(cls, d: dict):
-    """A config dataclass from a (possibly older) dict: unknown keys ignored."""
-    names = {f.name for f in fields(cls)}
-    return cls(**{k: v for k, v in d.items() if k in names})
 
 
 def runtime_config(vq: VQConfig, base: TransformerConfig,

@@ -21,20 +21,18 @@ from __future__ import annotations
 
 import argparse
 import json
-import warnings
 from pathlib import Path
 
 import torch
 import torch.nn as nn
 
 from interplay.motion.features import Normalizer
+from models.common import onnx_export
 
 from . import checkpoint
 from .config import FEATURE_DIM, PARTS, SamplingDefaults, runtime_config
 from .transformer import SPAMTransformer
 from .vqvae import RVQVAE
-
-OPSET = 17
 
 
 class VQEncode(nn.Module):
@@ -74,7 +72,7 @@ class Residual(nn.Module):
 
 
 def example_inputs(vq: RVQVAE, n: int = 6, batch: int = 2) -> dict[str, tuple]:
-    """Inputs per graph (also used by the tests and the torch benchmark)."""
+    """Inputs per graph (also used by the tests)."""
     k, q, p = vq.cfg.codes, vq.cfg.layers, len(PARTS)
     g = torch.Generator().manual_seed(0)
     text = torch.randn(batch, p, 384, generator=g)
@@ -101,15 +99,8 @@ _SPECS = {  # graph → (input names, output names, dynamic axes)
 
 
 def export_graph(module: nn.Module, name: str, inputs: tuple, out_dir: Path) -> Path:
-    """One ONNX file with named inputs/outputs and dynamic batch/time axes."""
-    names_in, names_out, axes = _SPECS[name]
-    path = out_dir / f"{name}.onnx"
-    with torch.no_grad(), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torch.onnx.export(module.eval(), inputs, str(path), input_names=names_in,
-                          output_names=names_out, dynamic_axes=axes, opset_version=OPSET,
-                          dynamo=False)
-    return path
+    """<name>.onnx with the contract's input/output names and dynamic batch/time axes."""
+    return onnx_export.export_graph(module, inputs, out_dir / f"{name}.onnx", *_SPECS[name])
 
 
 def export_all(vq: RVQVAE, base: SPAMTransformer, residual: SPAMTransformer,

@@ -25,13 +25,15 @@ from pathlib import Path
 
 import torch
 
+from models.common.schedule import History
+
 from . import checkpoint
 from .card import write_card
 from .config import LossConfig, SamplingDefaults, TrainConfig, TransformerConfig, VQConfig
 from .data import CACHE_DIR, TextBank, fit_normalizer, load_tracks
 from .export import export_all, export_vq
 from .report import codebook_usage, usage_summary, vq_report
-from .train import History, TokenBatches, encode_tracks, evaluate_transformer, train_transformer, train_vq
+from .train import TokenBatches, encode_tracks, evaluate_transformer, train_transformer, train_vq
 
 ROOT = Path(__file__).resolve().parents[2]
 WEIGHTS = ROOT / "models" / "weights"

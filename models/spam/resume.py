@@ -1,8 +1,9 @@
-"""Finish a `train --all` run that trained every stage but stopped before its export (the
-process was killed during the evaluator stage): export and document the checkpoints it left
-in models/cache/<variant>/, with the steps, times and final losses read back from its log.
+"""Finish a `python -m models.spam --all` run that trained every stage but stopped before
+its export (the process was killed during the evaluator stage): export and document the
+checkpoints it left in models/cache/<variant>/, with the steps, times and final losses read
+back from its log.
 
-  python -m models.spam.train --resume models/cache/train_all2.log
+  python -m models.spam --resume models/cache/train_all2.log
 
 Only the numbers a log line carries are recovered: a stage's steps and seconds are those of
 its last logged step (lines every `log_every` steps), and the "final" training losses average
@@ -17,11 +18,11 @@ import time
 from pathlib import Path
 
 from interplay.motion.features import Normalizer
+from models.common.schedule import History
 
 from . import checkpoint
 from .data import CACHE_DIR, TextBank, load_tracks
 from .pipeline import WEIGHTS, Budgets, finish, stack_numbers
-from .train import History
 
 _STEP = re.compile(r"^\[(?P<name>[\w/]+)\] step (?P<step>\d+) t=(?P<t>[\d.]+)s (?P<terms>.*)$")
 VARIANTS = {"spam": ("base", "residual"), "spam_short": (), "spam_nocs": ("base", "residual"),

@@ -3,20 +3,20 @@ transformers on the VQ's token tracks. Every stage is budgeted by wall-clock sec
 machine is a shared 2-core CPU) and by steps, whichever ends first; the learning rate warms up
 linearly and then follows a cosine to 10% over the budget.
 
-  python -m models.spam.train --all          # everything single-person (= make train)
+Budgets, schedule and the stage record are `models.common.schedule`'s (CODA's too).
+`python -m models.spam --all` runs every stage (`models/spam/pipeline.py`).
 """
 
 from __future__ import annotations
 
 import math
-import time
-from dataclasses import dataclass, field
 
 import numpy as np
 import torch
 import torch.nn.functional as F
 
 from interplay.motion.features import Normalizer
+from models.common.schedule import History, Schedule, optimizer_step
 
 from .config import PARTS, LossConfig, TrainConfig, TransformerConfig, VQConfig
 from .data import TextBank, Track, part_texts, sample_windows
@@ -27,48 +27,9 @@ from .vqvae import RVQVAE
 VQ_WINDOWS = (24, 40, 64)     # frames; most clips are 1–3 s, so windows vary per batch
 
 
-@dataclass
-class History:
-    """What a stage did: per-log-step losses, steps run, seconds taken."""
-    rows: list[dict] = field(default_factory=list)
-    steps: int = 0
-    seconds: float = 0.0
-
-    def last(self, key: str, n: int = 5) -> float:
-        vals = [r[key] for r in self.rows[-n:] if key in r]
-        return float(np.mean(vals)) if vals else float("nan")
-
-
-class Schedule:
-    """Budget (steps or seconds) and learning rate of one stage."""
-
-    def __init__(self, cfg: TrainConfig):
-        self.cfg, self.start = cfg, time.perf_counter()
-
-    def elapsed(self) -> float:
-        return time.perf_counter() - self.start
-
-    def done(self, step: int) -> bool:
-        return step >= self.cfg.steps or self.elapsed() >= self.cfg.seconds
-
-    def lr(self, step: int) -> float:
-        frac = min(1.0, max(step / self.cfg.steps, self.elapsed() / self.cfg.seconds))
-        warm = min(1.0, (step + 1) / self.cfg.warmup)
-        return self.cfg.lr * warm * (0.1 + 0.45 * (1 + math.cos(math.pi * frac)))
-
-
 def _optimiser(model: torch.nn.Module, lr: float) -> torch.optim.Optimizer:
     return torch.optim.AdamW([p for p in model.parameters() if p.requires_grad], lr=lr,
                              betas=(0.9, 0.99), weight_decay=0.0)
-
-
-def _step(opt, sched: Schedule, step: int, loss: torch.Tensor, model) -> None:
-    for g in opt.param_groups:
-        g["lr"] = sched.lr(step)
-    opt.zero_grad(set_to_none=True)
-    loss.backward()
-    torch.nn.utils.clip_grad_norm_(model.parameters(), 1.0)
-    opt.step()
 
 
 def _log(hist: History, step: int, sched: Schedule, terms: dict, log, name: str, every: int):
@@ -96,7 +57,7 @@ def train_vq(cfg: VQConfig, loss_cfg: LossConfig, tc: TrainConfig, tracks: list[
         x = torch.from_numpy(np.stack([feats[i][s:s + length] for i, s in picks]))
         recon, commit, codes = model(x)
         terms = crit(recon, x, commit, cfg.beta)
-        _step(opt, sched, step, terms["loss"], model)
+        optimizer_step(opt, sched.lr(step), terms["loss"], model.parameters())
         _log(hist, step, sched, terms, log, name, tc.log_every)
         step += 1
     hist.steps, hist.seconds = step, sched.elapsed()
@@ -193,7 +154,7 @@ def train_transformer(cfg: TransformerConfig, tc: TrainConfig, batches: TokenBat
     opt, sched, hist, step = _optimiser(model, tc.lr), Schedule(tc), History(), 0
     while not sched.done(step):
         ce, acc = transformer_loss(model, *batches.sample(rng, tc.batch), gen)
-        _step(opt, sched, step, ce, model)
+        optimizer_step(opt, sched.lr(step), ce, model.parameters())
         _log(hist, step, sched, {"ce": ce, "acc": acc}, log, name, tc.log_every)
         step += 1
     hist.steps, hist.seconds = step, sched.elapsed()

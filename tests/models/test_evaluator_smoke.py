@@ -8,9 +8,9 @@ torch = pytest.importorskip("torch")
 
 from interplay.motion.clip import default_clips  # noqa: E402
 from interplay.review.evaluator import EvaluatorRuntime as Runtime  # noqa: E402
+from models.common.contrastive import info_nce  # noqa: E402
 from models.evaluator.config import EvaluatorConfig  # noqa: E402
 from models.evaluator.export import export, load_checkpoint, onnx_matches_torch  # noqa: E402
-from models.evaluator.model import info_nce  # noqa: E402
 from models.evaluator.train import TINY, train  # noqa: E402
 
 

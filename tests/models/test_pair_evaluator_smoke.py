@@ -9,10 +9,11 @@ torch = pytest.importorskip("torch")
 
 from interplay.motion.clip import default_clips  # noqa: E402
 from interplay.review.pair_evaluator import PairEvaluator  # noqa: E402
+from models.common.contrastive import info_nce  # noqa: E402
 from models.evaluator.export import onnx_matches_torch  # noqa: E402
 from models.pair_evaluator.config import PairEvaluatorConfig  # noqa: E402
 from models.pair_evaluator.export import export, load_checkpoint  # noqa: E402
-from models.pair_evaluator.train import TINY, loss_fn, train  # noqa: E402
+from models.pair_evaluator.train import TINY, train  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -67,6 +68,6 @@ def test_broken_pairs_are_negatives_of_every_text():
     m = torch.nn.functional.normalize(torch.tensor([[1.0, 0.0], [0.0, 1.0]]), dim=1)
     t = m.clone()
     same = torch.zeros(2, 2, dtype=torch.bool)
-    far = loss_fn(m, t, -m, same, 0.1)
-    close = loss_fn(m, t, m * 0.99 + 0.01, same, 0.1)
+    far = info_nce(m, t, same, 0.1, text_negatives=-m)
+    close = info_nce(m, t, same, 0.1, text_negatives=m * 0.99 + 0.01)
     assert close > far

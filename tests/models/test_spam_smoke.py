@@ -14,8 +14,8 @@ pytest.importorskip("onnx")
 ort = pytest.importorskip("onnxruntime")
 
 from interplay.motion.clip import default_clips  # noqa: E402
+from models.bench_torch import bench, bench_onnx, graph_inputs  # noqa: E402
 from models.spam import checkpoint  # noqa: E402
-from models.spam.bench_torch import bench, bench_onnx, graph_inputs  # noqa: E402
 from models.spam.config import LossConfig, TrainConfig, TransformerConfig, VQConfig  # noqa: E402
 from models.spam.data import TextBank, fit_normalizer, load_tracks  # noqa: E402
 from models.spam.export import example_inputs, export_all  # noqa: E402

@@ -6,7 +6,14 @@ and int8 transformers, two intra-op threads without spinning, as the runtime bui
   base       tokens (2, 4, n) — CFG's conditional + unconditional passes in one batch
   residual   tokens (2, 4, Q, n), layer (2,)
 
-  python -m models.spam.bench_torch [--seconds 6] [--runs 20] [--json]
+  python -m models.bench_torch [--seconds 6] [--runs 20] [--json]
+
+Where it lives: this is a measurement, not part of a model. It trains and ships nothing and
+no model code imports it; it only reads SPAM's checkpoints and exported graphs. So it stands
+beside train_all.py at the top of the training side, outside the SPAM package (measurement
+does not live inside a model package) and outside models/common (which holds what the models
+are built from). It cannot join the product's benchmarks (`interplay bench`,
+backend/interplay/bench) because it needs torch, which the product never imports.
 """
 
 from __future__ import annotations
@@ -19,13 +26,11 @@ from pathlib import Path
 
 import torch
 
-import models.spam  # noqa: F401  (OpenMP wait policy before torch loads)
-
-from . import checkpoint
-from .config import FEATURE_DIM, PARTS, TEXT_DIM
-from .data import CACHE_DIR
-from .transformer import SPAMTransformer
-from .vqvae import RVQVAE
+from models.spam import checkpoint
+from models.spam.config import FEATURE_DIM, PARTS, TEXT_DIM
+from models.spam.data import CACHE_DIR
+from models.spam.transformer import SPAMTransformer
+from models.spam.vqvae import RVQVAE
 
 
 def load_models(ckpt_dir: Path) -> tuple[RVQVAE, SPAMTransformer, SPAMTransformer, str]:
@@ -34,7 +39,7 @@ def load_models(ckpt_dir: Path) -> tuple[RVQVAE, SPAMTransformer, SPAMTransforme
     if all((ckpt_dir / f"{n}.pt").exists() for n in names):
         vq, base, res = (checkpoint.load(ckpt_dir / f"{n}.pt") for n in names)
         return vq, base, res, str(ckpt_dir)
-    from .pipeline import TRANSFORMER, VQ
+    from models.spam.pipeline import TRANSFORMER, VQ
     return (RVQVAE(VQ).eval(), SPAMTransformer(TRANSFORMER).eval(),
             SPAMTransformer(replace(TRANSFORMER, residual=True)).eval(), "untrained")
 
@@ -95,10 +100,11 @@ def bench(vq: RVQVAE, base: SPAMTransformer, res: SPAMTransformer, tokens: int,
 
 
 def main(argv: list[str] | None = None) -> None:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(prog="python -m models.bench_torch",
+                                 description=__doc__.split("\n")[0])
     ap.add_argument("--ckpt", default=str(CACHE_DIR / "spam"))
-    ap.add_argument("--weights", default=str(Path(__file__).resolve().parents[1] / "weights"
-                                             / "spam"), help="exported graphs of the same weights")
+    ap.add_argument("--weights", default=str(Path(__file__).resolve().parent / "weights" / "spam"),
+                    help="exported graphs of the same weights")
     ap.add_argument("--seconds", type=float, default=6.0, help="motion length (20 fps)")
     ap.add_argument("--runs", type=int, default=20)
     ap.add_argument("--threads", type=int, default=2)
