@@ -91,7 +91,7 @@ class JobCreated(BaseModel):
     seed: int
 
 
-JobState = Literal["queued", "running", "done", "failed"]
+JobState = Literal["queued", "running", "done", "failed", "cancelled"]
 
 
 class JobStatus(BaseModel):
@@ -100,6 +100,8 @@ class JobStatus(BaseModel):
     status: JobState
     events: int
     stream: str
+    reason: str | None = Field(default=None, description="Why a failed or cancelled job ended.")
+    attempts: int = Field(default=0, description="How many times a worker started the job.")
 
 
 class Person(BaseModel):
