@@ -15,8 +15,10 @@ def cmd_generate(args) -> int:
 
     from interplay.generators.base import Request, random_seed
     from interplay.generators.router import load_generator
-    from interplay.motion.metrics import clip_metrics
+    from interplay.motion.metrics import clip_metrics, frame_highlights
+    from interplay.motion.motion import Motion
     from interplay.pipeline.motion_json import plain
+    from interplay.pipeline.orchestrator import StageError, default_evaluator, orchestrate
     from interplay.pipeline.requests import GenerationRequest, readable_errors
     try:
         body = GenerationRequest(prompt=args.prompt, persons=args.persons, seconds=args.seconds,
@@ -28,11 +30,17 @@ def cmd_generate(args) -> int:
     if Path(args.out).is_dir():
         raise CliError(f"{args.out} is a directory; give a file name")
     seed = body.seed if body.seed is not None else random_seed()
-    generator = load_generator()
-    motion = generator.generate(Request(prompt, body.persons, body.seconds, seed))
-    if not motion.metrics:
-        motion.metrics = clip_metrics([p.astype("float64") for p in motion.people])
-    motion.prompt, motion.seed = motion.prompt or prompt, seed
+    # The studio's pipeline (plan → generate → review → trajectory), so the CLI and the
+    # studio give the same motion for the same prompt and seed.
+    try:
+        out = orchestrate(load_generator(), Request(prompt, body.persons, body.seconds, seed),
+                          emit=lambda event: None, on_frames=lambda start, chunk: None,
+                          evaluator=default_evaluator())
+    except StageError as exc:
+        raise CliError(f"generation failed at {exc.stage}: {exc.reason}") from None
+    people = [p.astype("float64") for p in out.people]
+    motion = Motion(people=out.people, plan=out.plan.to_json(), metrics=clip_metrics(people),
+                    highlights=frame_highlights(people), prompt=prompt, seed=seed)
     write_text(args.out, json.dumps(plain(motion.to_json()), separators=(",", ":")))
     print(f"wrote {args.out}: {len(motion.people)} person(s), {motion.frames} frames "
           f"({motion.seconds:g} s), seed {seed}", file=sys.stderr)
