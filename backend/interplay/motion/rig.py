@@ -25,9 +25,9 @@ Wherever that reference says little (a straight knee or elbow has no bend plane;
 pointing along its reference axis), the previous frame's axis, held in the parent's frame,
 takes over smoothly: the twist is propagated along time, never re-solved from rest, so it does
 not jump while the bone barely moves. Leaves carry no bone: the head and wrists continue their
-parent's rotation (nothing in 22 joints tells a head turn or a hand bend), and each toe turns
-its tip level with the toe joint while the toe is on the ground (low and slow), so
-the toe end site stays above the floor when the foot is flat. Quaternions keep one sign
+parent's rotation (nothing in 22 joints tells a head turn or a hand bend), and each toe
+follows its foot unless its tip (the end site) would dip under the floor: then it pitches up
+just enough, so a flat foot's toes lie on the floor, not through it. Quaternions keep one sign
 through time (q and -q are the same rotation; a reader interpolating them must not see a flip).
 """
 
@@ -42,6 +42,7 @@ from interplay.motion.kinematics import (
     _FRAME_CHILDREN,
     _joint_frames,
     fit_offsets,
+    floor_height,
     forward_kinematics,
 )
 from interplay.motion.rotations import (
@@ -59,10 +60,6 @@ _SURE = 0.5
 # faster (a hinge's bend plane turning while the limb is almost straight) the twist follows
 # over a few frames instead of in one, and the hinge is briefly not a pure hinge.
 _STEP = np.deg2rad(15.0)
-# Toe: on the ground below this height (m) and speed (m/s), fully flattened; off it above
-# twice those. Flattening changes by at most this much per frame (rad).
-_TOE_LOW, _TOE_SLOW = 0.05, 0.4
-_TOE_STEP = np.deg2rad(8.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -107,7 +104,7 @@ _PLAN: tuple[tuple[str, int, int, int, np.ndarray, float], ...] = (
     ("hinge", J["left_shoulder"], J["left_elbow"], -1, np.array([0.0, -1.0, 0.0]), 0.0),
     ("hinge", J["right_shoulder"], J["right_elbow"], -1, np.array([0.0, 1.0, 0.0]), 0.0),
 )
-_TOES = ((J["left_foot"], 1), (J["right_foot"], 3))   # toe joint, its foot_contacts column
+_TOES = (J["left_foot"], J["right_foot"])
 
 
 def end_sites(offsets: np.ndarray) -> dict[int, np.ndarray]:
@@ -220,33 +217,24 @@ def _propagate(bone: np.ndarray, ref: np.ndarray, start: np.ndarray) -> np.ndarr
     return out
 
 
-def _toe_flatten(joints: np.ndarray, glob_ankle: np.ndarray, toe: int, fps: float) -> np.ndarray:
-    """Local rotations (T, 3, 3) of a toe joint: identity in the air; on the ground, the pitch
-    that levels the toe tip (its rest +Z) with the toe joint, eased in and out."""
-    pos = joints[:, toe]
-    speed = np.linalg.norm(np.gradient(pos, axis=0), axis=-1) * fps if len(pos) > 1 else np.zeros(1)
-    low = np.clip(2.0 - pos[:, 1] / _TOE_LOW, 0.0, 1.0)
-    slow = np.clip(2.0 - speed / _TOE_SLOW, 0.0, 1.0)
-    weight = low * slow                                          # (T,) 0 in the air, 1 planted
-    tip = glob_ankle[:, :, 2]                                    # toe tip direction, world
-    level = tip.copy()
-    level[:, 1] = 0.0
-    # Only a tip that points down is lifted; one already above the toe's level stays.
-    down = (tip[:, 1] < 0) & (np.linalg.norm(level, axis=-1) > 1e-6)
-    full = np.where(down[:, None, None], rotation_between(tip, np.where(down[:, None], level, tip)),
-                    np.eye(3))
-    angle = np.arccos(np.clip((np.trace(full, axis1=-2, axis2=-1) - 1) / 2, -1.0, 1.0))
-    # Ease: the applied fraction of the full pitch moves at most _TOE_STEP per frame.
-    target = angle * weight
-    applied = np.empty_like(target)
-    cur = target[0]
-    for i, goal in enumerate(target):
-        cur = cur + np.clip(goal - cur, -_TOE_STEP, _TOE_STEP)
-        applied[i] = cur
-    frac = np.where(angle > 1e-9, np.clip(applied / np.maximum(angle, 1e-9), 0.0, 1.0), 0.0)
-    axis = np.cross(tip, level)
-    axis = _unit(axis) * (angle * frac)[:, None]
-    world = axis_angle_to_matrix(np.where(down[:, None], axis, 0.0))
+def _toe_above_floor(joints: np.ndarray, glob_ankle: np.ndarray, toe: int, length: float,
+                     floor: float) -> np.ndarray:
+    """Local rotations (T, 3, 3) of a toe joint: identity (the toe follows the foot) unless
+    its tip (rest +Z, `length` ahead) would be under the floor; then the least pitch up that
+    puts the tip on the floor, or level with the toe joint when the joint itself is under it.
+    A flat foot's toes lie flat; the pitch is a continuous function of the pose."""
+    tip = glob_ankle[:, :, 2]                                    # tip direction, world (T, 3)
+    height = joints[:, toe, 1] - floor
+    want = np.clip(-height / length, -1.0, 0.0)                  # lowest allowed tip direction y
+    low = tip[:, 1] < want
+    flat = np.linalg.norm(tip[:, [0, 2]], axis=-1)
+    ok = low & (flat > 1e-6)
+    # Turn the tip up in its vertical plane to direction y = want.
+    level = np.where(ok[:, None], tip * np.array([1.0, 0.0, 1.0]) / np.maximum(flat, 1e-6)[:, None], tip)
+    target = level * np.sqrt(1 - want ** 2)[:, None]
+    target[:, 1] = want
+    world = np.where(ok[:, None, None], rotation_between(tip, np.where(ok[:, None], target, tip)),
+                     np.eye(3))
     # World pitch applied after the ankle's rotation → local: ankle^T · pitch · ankle.
     return np.swapaxes(glob_ankle, -1, -2) @ world @ glob_ankle
 
@@ -260,11 +248,14 @@ def _continuous(q: np.ndarray) -> np.ndarray:
     return q
 
 
-def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: float = sk.FPS) -> Rig:
+def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: float = sk.FPS,
+              floor: float | None = None) -> Rig:
     """A Rig (offsets, root, continuous local rotations) reproducing joints (T, 22, 3) by FK:
     exactly (to float precision) when the joints lie on the offsets' bone lengths, as every
     motion in Interplay does. offsets (22, 3) default to the motion's own (`fit_offsets`).
-    fps is the motion's rate (the toes' ground contact reads speeds)."""
+    floor: the ground's height (y, m) the toe tips keep above; the person's own
+    (`kinematics.floor_height`) when None; pass the shared one for two people. fps, the
+    motion's rate, is accepted for the exports' symmetry; the rotations do not depend on it."""
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or joints.shape[0] < 1:
         raise ValueError(f"joints must be (T >= 1, {sk.NUM_JOINTS}, 3), got {joints.shape}")
@@ -314,8 +305,11 @@ def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: flo
     s3 = J["spine3"]
     local[:, s3] = np.swapaxes(glob[:, sk.PARENTS[s3]], -1, -2) @ glob[:, s3]
     # Leaves: head and wrists continue the parent; toes level with the floor in contact.
-    for toe, _ in _TOES:
-        local[:, toe] = _toe_flatten(joints, glob[:, sk.PARENTS[toe]], toe, fps)
+    ground = floor_height([joints]) if floor is None else float(floor)
+    tips = end_sites(offsets)
+    for toe in _TOES:
+        local[:, toe] = _toe_above_floor(joints, glob[:, sk.PARENTS[toe]], toe,
+                                         float(np.linalg.norm(tips[toe])), ground)
     quats = _continuous(matrix_to_quat(local))
     return Rig(offsets=offsets.copy(), root=joints[:, sk.PELVIS].copy(), rotations=quats)
 
