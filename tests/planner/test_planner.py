@@ -231,3 +231,21 @@ def test_bad_requests_raise_value_error(args):
 def test_plan_without_an_llm_is_the_embedded_one():
     p = plan("a person walks forward, then jumps", 1, 4.0, settings=Settings())
     assert p.planner == "embedded" and p.fallback_reason is None and len(p.segments) == 2
+
+
+@pytest.mark.parametrize("prompt,segment", [
+    # a possessive before something a person has that is not a body part stays a possessive
+    ("a person runs, then stops to catch his breath", "a person stops to catch their breath"),
+    ("a woman holds her breath and dives", "a person holds their breath"),
+    # body parts keep the parts' own words
+    ("a person waves with his left hand", "a person waves with the left hand"),
+    # no known verb: the prompt as written, without a doubled subject
+    ("a person picks up his bag", "a person picks up their bag"),
+    ("the man picks up a box", "a person picks up a box"),
+])
+def test_rewritten_prompts_read_as_plain_english(prompt, segment):
+    p = _plan(prompt)
+    texts = [s.prompt for s in p.segments]
+    assert segment in texts, texts
+    for t in [p.rewritten, *texts, *(s.base or "" for s in p.segments)]:
+        assert not re.search(r"\b(?:a person a person|the the|the breath|his|her)\b", t), t

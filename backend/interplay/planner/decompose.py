@@ -75,9 +75,21 @@ def parts_in(text: str) -> list[str]:
     return found
 
 
+# What a body has: "his left hand" reads "the left hand" (the parts' own words); anything else
+# a person has keeps a possessive in plain English: "catch his breath" → "catch their breath".
+_BODY = re.compile(r"(?:(?:left|right|both|each|other|own)\s+)?(?:arms?|hands?|fists?|elbows?|"
+                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
+                   r"toes?|heels?|ankles?|thighs?|shins?|head|face|neck|chest|back|waist|hips?|"
+                   r"torso|body|belly|stomach|sides?|chin|ears?|eyes?|mouth|nose|hair|lap|"
+                   r"buttocks?|bottom|knuckles?|upper\s+body|lower\s+body)\b", re.I)
+
+
 def plain(text: str) -> str:
-    """Possessives → "the", spaces tidied."""
-    text = re.sub(r"\b(?:his|her|their|its)\s+(?!own\b)", "the ", text)
+    """Possessives → "the" before a body part ("his left hand" → "the left hand"), "their"
+    before anything else ("his breath" → "their breath"), spaces tidied."""
+    def det(m: re.Match) -> str:
+        return "the " if _BODY.match(text, m.end()) else "their "
+    text = re.sub(r"\b(?:his|her|their|its)\s+(?!own\b)", det, text)
     return re.sub(r"\s+", " ", text).strip(" ,")
 
 

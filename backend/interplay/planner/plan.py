@@ -25,7 +25,7 @@ from typing import Any
 from interplay.motion.skeleton import FPS
 from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
-from interplay.planner.decompose import POSTURE_BASE, Action, decompose, split_subject
+from interplay.planner.decompose import POSTURE_BASE, Action, decompose, plain, split_subject
 from interplay.planner.durations import allocate, estimate, fits
 from interplay.planner.schema import Plan, TrajectorySpec
 from interplay.planner.trajectory_text import parse as parse_trajectory
@@ -37,6 +37,10 @@ _OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
 _CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
 _FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
 IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
+# A leading subject the verb table did not split off ("a person picks up …": no known verb).
+_SUBJECT = re.compile(r"^(?:(?:a|an|the|one|two|this|that)\s+)?(?:person|man|woman|boy|girl|guy|"
+                      r"lady|kid|child|people|persons|men|women|figure|someone|somebody|he|she|"
+                      r"they|both)\s+", re.I)
 SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest known phrase
 _ONSET = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
                     re.IGNORECASE)
@@ -224,7 +228,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
         steps.append(_Step(action, clause.repeat, actors, traj, clause.group, idle, active))
     if not steps:                                   # nothing recognisable: keep the words
         action = decompose("stands still")
-        action.text = split_subject(temporal.normalize(text))[1]
+        action.text = plain(_SUBJECT.sub("", split_subject(temporal.normalize(text))[1]))
         action.base = f"a person {action.text}"
         steps = [_Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)))]
         reasons.append("no motion recognised: one segment with the prompt as written")
