@@ -76,8 +76,22 @@ def test_bvh_export_is_one_person_per_file(client, two_person, person):
     assert np.abs(pos[:, idx] - joints).max() < 2e-3
 
 
+def test_glb_export_is_one_binary_glb_for_both_people(client, two_person):
+    import pygltflib
+    r = client.get(f"/api/motions/{two_person}/export?format=glb")
+    assert r.status_code == 200 and r.headers["content-type"] == "model/gltf-binary"
+    assert f'filename="interplay-{two_person}.glb"' in r.headers["content-disposition"]
+    doc = pygltflib.GLTF2.load_from_bytes(r.content)
+    assert len(doc.skins) == len(doc.meshes) == 2 and len(doc.animations) == 1
+    bare = client.get(f"/api/motions/{two_person}/export", params={"format": "glb", "mesh": "false"})
+    assert bare.status_code == 200 and len(bare.content) < len(r.content) / 2
+    assert f'filename="interplay-{two_person}-skeleton.glb"' in bare.headers["content-disposition"]
+    assert pygltflib.GLTF2.load_from_bytes(bare.content).meshes == []
+
+
 @pytest.mark.parametrize("query,word", [
-    ("format=fbx", "format"), ("format=bvh&person=2", "person"), ("format=bvh&person=-1", "person"),
+    ("format=fbx", "format"), ("format=glb&mesh=maybe", "mesh"),
+    ("format=bvh&person=2", "person"), ("format=bvh&person=-1", "person"),
     ("format=bvh&person=one", "person")])
 def test_bad_export_queries_are_422(client, two_person, query, word):
     r = client.get(f"/api/motions/{two_person}/export?{query}")

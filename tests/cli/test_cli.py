@@ -80,6 +80,19 @@ def test_export_json_round_trips(made, tmp_path):
     assert np.array_equal(a.people[0], b.people[0]) and a.plan == b.plan
 
 
+@pytest.mark.parametrize("mesh", [True, False])
+def test_export_glb_holds_everyone_with_or_without_the_mesh(made, tmp_path, mesh):
+    import pygltflib
+    out = tmp_path / "m.glb"
+    assert cli.main(["export", str(made[2]), "--format", "glb", "--out", str(out),
+                     *([] if mesh else ["--no-mesh"])]) == 0
+    data = out.read_bytes()
+    assert data[:4] == b"glTF"
+    doc = pygltflib.GLTF2.load_from_bytes(data)
+    assert len(doc.skins) == 2 and len(doc.meshes) == (2 if mesh else 0)
+    assert doc.animations[0].name == Motion.from_json(json.loads(made[2].read_text())).prompt
+
+
 def test_bad_files_and_arguments_exit_2_with_a_message(made, tmp_path, capsys):
     bad_json = tmp_path / "bad.json"
     bad_json.write_text("{nope")

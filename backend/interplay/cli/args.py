@@ -25,13 +25,21 @@ def read_motion(path: str):
         raise CliError(f"{path}: not a motion file: {exc}") from None
 
 
-def write_text(path: str, text: str) -> None:
+def _out_path(path: str) -> Path:
     p = Path(path)
     if p.is_dir():
         raise CliError(f"{path} is a directory; give a file name")
     if not p.parent.is_dir():
         raise CliError(f"{p.parent}: no such directory")
-    p.write_text(text)
+    return p
+
+
+def write_text(path: str, text: str) -> None:
+    _out_path(path).write_text(text)
+
+
+def write_bytes(path: str, data: bytes) -> None:
+    _out_path(path).write_bytes(data)
 
 
 def seconds(text: str) -> float:

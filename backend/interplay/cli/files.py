@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import sys
 
-from interplay.cli.args import CliError, read_motion, write_text
+from interplay.cli.args import CliError, read_motion, write_bytes, write_text
 
 
 def cmd_metrics(args) -> int:
@@ -25,6 +25,12 @@ def cmd_metrics(args) -> int:
 
 def cmd_export(args) -> int:
     motion = read_motion(args.motion)
+    if args.format == "glb":
+        from interplay.motion.formats.gltf import write_glb
+        write_bytes(args.out, write_glb([p.astype("float64") for p in motion.people], fps=motion.fps,
+                                        mesh=not args.no_mesh, name=motion.prompt or "motion"))
+        print(f"wrote {args.out}", file=sys.stderr)
+        return 0
     if args.format == "json":
         from interplay.pipeline.motion_json import plain
         text = json.dumps(plain(motion.to_json()), separators=(",", ":"))
@@ -45,9 +51,12 @@ def register(sub) -> None:
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(func=cmd_metrics)
 
-    p = sub.add_parser("export", help="export a motion JSON file as BVH (one person) or JSON")
+    p = sub.add_parser("export", help="export a motion JSON file as BVH (one person), GLB "
+                                      "(everyone, skinned) or JSON")
     p.add_argument("motion")
-    p.add_argument("--format", choices=("bvh", "json"), required=True)
+    p.add_argument("--format", choices=("bvh", "glb", "json"), required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--person", type=int, default=0, help="BVH: which person (default 0)")
+    p.add_argument("--no-mesh", action="store_true",
+                   help="GLB: skeletons and the animation only, no skinned mesh")
     p.set_defaults(func=cmd_export)

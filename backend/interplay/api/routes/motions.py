@@ -1,4 +1,4 @@
-"""Stored motions: GET /api/motions/{id}, its export (BVH per person or Motion JSON), and the
+"""Stored motions: GET /api/motions/{id}, its export (BVH per person, GLB or Motion JSON), and the
 skeleton description the viewer draws with."""
 
 from __future__ import annotations
@@ -42,14 +42,24 @@ def motion_history(motion_id: str, repo: RepoDep) -> dict:
 
 
 @router.get("/motions/{motion_id}/export", responses={
-    **ERRORS, 200: {"content": {"text/plain": {}, "application/json": {}},
-                    "description": "A BVH file (one person) or the Motion JSON, as a download."}})
+    **ERRORS, 200: {"content": {"text/plain": {}, "application/json": {}, "model/gltf-binary": {}},
+                    "description": "A BVH file (one person), a GLB (everyone) or the Motion JSON, "
+                                   "as a download."}})
 def export_motion(motion_id: str, repo: RepoDep,
-                  format: Annotated[Literal["bvh", "json"], Query(description="bvh or json")
-                                    ] = "json",
+                  format: Annotated[Literal["bvh", "glb", "json"],
+                                    Query(description="bvh, glb or json")] = "json",
                   person: Annotated[int, Query(ge=0, le=1, description="BVH: which person")] = 0,
+                  mesh: Annotated[bool, Query(description="GLB: with the skinned mesh (false: "
+                                                          "skeletons and animation only)")] = True,
                   ) -> Response:
     motion = _load(repo, motion_id)
+    if format == "glb":
+        from interplay.motion.formats.gltf import MEDIA_TYPE, write_glb
+        data = write_glb([p.astype("float64") for p in motion.people], fps=motion.fps, mesh=mesh,
+                         name=motion.prompt or "motion")
+        suffix = "" if mesh else "-skeleton"
+        return Response(data, media_type=MEDIA_TYPE, headers={
+            "Content-Disposition": f'attachment; filename="interplay-{motion.id}{suffix}.glb"'})
     if format == "json":
         body = json.dumps(motion_file(motion), separators=(",", ":"))
         return Response(body, media_type="application/json", headers={
