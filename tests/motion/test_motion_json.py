@@ -75,3 +75,47 @@ def test_constructor_validates_people(salsa):
         Motion(people=[])
     with pytest.raises(ValueError, match="different lengths"):
         Motion(people=[salsa[0], salsa[1][:-3]])
+
+
+# --- Version 2: the skeleton and each person's rig beside the joints ------------------------
+
+def test_version_2_carries_the_skeleton_and_round_trips(salsa):
+    from interplay.motion import skeleton as sk
+    from interplay.motion.kinematics import fit_to_skeleton
+    from interplay.motion.rig import rig_from_json, rig_positions
+    people = [fit_to_skeleton(p.astype(np.float64))[0] for p in salsa]   # on fixed bones
+    m = Motion(people=people, prompt="two people dance salsa", seed=3)
+    d = json.loads(json.dumps(m.to_json(rig=True)))
+    assert d["schema"] == "interplay.motion/2"
+    assert d["joint_names"] == list(sk.JOINT_NAMES) and d["parents"] == list(sk.PARENTS)
+    assert "quaternion" in d["rig_convention"] and "(w, x, y, z)" in d["rig_convention"]
+    for person, joints in zip(d["people"], people):
+        rig = rig_from_json(person)
+        assert rig.offsets.shape == (22, 3) and rig.root.shape == (40, 3)
+        assert rig.rotations.shape == (40, 22, 4)
+        np.testing.assert_allclose(np.linalg.norm(np.asarray(person["rig"]["rotations"]), axis=-1),
+                                   1.0, atol=5e-6)
+        # The positions from the rotations are the joints (and the joints in the file).
+        assert np.abs(rig_positions(rig) - joints).max() < 1e-4
+        assert np.abs(rig_positions(rig) - np.asarray(person["joints"])).max() < 1e-3
+    back = Motion.from_json(d)                                  # version 2 reads back …
+    for a, b in zip(back.people, people):
+        assert np.abs(a - b).max() <= 0.5e-4 + 1e-6
+    assert back.prompt == m.prompt and back.seed == 3
+    v1 = json.loads(json.dumps(m.to_json()))                   # … and version 1 still does
+    assert "schema" not in v1 and "rig" not in v1["people"][0]
+    assert all(np.array_equal(a, b) for a, b in zip(Motion.from_json(v1).people, back.people))
+
+
+def test_version_2_problems_are_named(salsa):
+    from interplay.motion.rig import rig_from_json
+    d = Motion(people=[salsa[0]]).to_json(rig=True)
+    with pytest.raises(ValueError, match="schema"):
+        Motion.from_json({**d, "schema": "interplay.motion/9"})
+    with pytest.raises(ValueError, match="'rig'"):
+        Motion.from_json({**d, "people": [{"joints": d["people"][0]["joints"]}]})
+    with pytest.raises(ValueError, match="no 'rig'"):
+        rig_from_json({"joints": []})
+    bad = {"rig": {**d["people"][0]["rig"], "rotations": [[1, 0, 0, 0]]}}
+    with pytest.raises(ValueError, match="shapes"):
+        rig_from_json(bad)

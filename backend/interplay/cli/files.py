@@ -25,6 +25,9 @@ def cmd_metrics(args) -> int:
 
 def cmd_export(args) -> int:
     motion = read_motion(args.motion)
+    given = [f"--{k}" for k in ("fps", "units", "up", "names") if getattr(args, k) is not None]
+    if given and args.format != "bvh":
+        raise CliError(f"{', '.join(given)}: BVH presets, for --format bvh only")
     if args.format == "glb":
         from interplay.motion.formats.gltf import write_glb
         write_bytes(args.out, write_glb([p.astype("float64") for p in motion.people], fps=motion.fps,
@@ -33,13 +36,17 @@ def cmd_export(args) -> int:
         return 0
     if args.format == "json":
         from interplay.pipeline.motion_json import plain
-        text = json.dumps(plain(motion.to_json()), separators=(",", ":"))
+        text = json.dumps(plain(motion.to_json(rig=True)), separators=(",", ":"))
     else:
         if not 0 <= args.person < len(motion.people):
             raise CliError(f"--person {args.person}: the motion has {len(motion.people)} "
                            f"person(s), numbered from 0")
         from interplay.motion.formats.bvh import write_bvh
-        text = write_bvh(motion.people[args.person].astype("float64"), fps=motion.fps)
+        from interplay.motion.kinematics import floor_height
+        people = [p.astype("float64") for p in motion.people]
+        text = write_bvh(people[args.person], fps=motion.fps, out_fps=args.fps or motion.fps,
+                         units=args.units or "m", up=args.up or "y", names=args.names or "smpl",
+                         floor=floor_height(people))
     write_text(args.out, text)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
@@ -57,6 +64,14 @@ def register(sub) -> None:
     p.add_argument("--format", choices=("bvh", "glb", "json"), required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--person", type=int, default=0, help="BVH: which person (default 0)")
+    from interplay.motion.formats.bvh import FPS_CHOICES, NAMINGS, UNITS, UP_AXES
+    p.add_argument("--fps", type=int, choices=FPS_CHOICES,
+                   help="BVH: frames per second, resampled (default 20, the motion's)")
+    p.add_argument("--units", choices=tuple(UNITS), help="BVH: m (default) or cm")
+    p.add_argument("--up", choices=UP_AXES,
+                   help="BVH: up axis, y (default) or z (facing -Y, as in Blender)")
+    p.add_argument("--names", choices=NAMINGS,
+                   help="BVH: joint names, smpl (default) or mixamo (Hips, LeftUpLeg, ...)")
     p.add_argument("--no-mesh", action="store_true",
                    help="GLB: skeletons and the animation only, no skinned mesh")
     p.set_defaults(func=cmd_export)

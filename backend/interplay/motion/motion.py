@@ -1,8 +1,20 @@
 """`Motion`: a generated motion for one or two people, and its JSON form.
 
-Motion JSON: {"fps": 20, "skeleton": "smpl22", "people": [{"joints": [[[x, y, z] × 22] × T]}],
+Motion JSON, version 1 (what the stream, the store and motion files use):
+{"fps": 20, "skeleton": "smpl22", "people": [{"joints": [[[x, y, z] × 22] × T]}],
 "plan": {...}, "metrics": {...}} plus optional "highlights", "prompt", "seed". Joints are
 rounded to 0.1 mm in JSON.
+
+Version 2 (the exports: `to_json(rig=True)`) adds the skeleton, so that a rig can be driven
+without solving rotations: "schema": "interplay.motion/2", "joint_names" and "parents" (22,
+SMPL order, -1 for the root), "rig_convention" (a short description), and per person "rig":
+{"offsets": [[x, y, z] × 22] (rest offsets, metres, parent → child in the parent's rest frame;
+the rest pose faces +Z, Y up; the root row is the rest pelvis height), "root": [[x, y, z] × T]
+(pelvis positions), "rotations": [[[w, x, y, z] × 22] × T] (local unit quaternions, each
+relative to its parent, the pelvis's global, identity at rest; from `rig.solve_rig`)}. Offsets
+and root are rounded to 1 µm and quaternions to 1e-6, so forward kinematics of the rig gives
+the joints back well within 1 mm. `from_json` reads both versions (a version-1 file has no
+"schema"); the joints stay the motion's truth, the rig is derived from them.
 """
 
 from __future__ import annotations
@@ -11,9 +23,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from interplay.motion.skeleton import FPS, NUM_JOINTS, SKELETON_NAME
+from interplay.motion.skeleton import FPS, JOINT_NAMES, NUM_JOINTS, PARENTS, SKELETON_NAME
 
 DECIMALS = 4  # metres → 0.1 mm
+SCHEMA_V2 = "interplay.motion/2"
+SCHEMAS = (SCHEMA_V2,)          # "schema" values from_json reads (none: version 1)
+RIG_DECIMALS = 6                # offsets and root: 1 µm; quaternions: 1e-6
+RIG_CONVENTION = ("local rotations as unit quaternions (w, x, y, z), each relative to its "
+                  "parent (the pelvis's global); identity is the rest pose given by the "
+                  "offsets (metres, parent to child, facing +Z, Y up); root: pelvis positions")
 
 
 def validate_people(people: list) -> list[np.ndarray]:
@@ -65,14 +83,26 @@ class Motion:
     def seconds(self) -> float:
         return self.frames / self.fps
 
-    def to_json(self) -> dict:
-        """The Motion JSON (plain lists, joints rounded to 0.1 mm)."""
-        d = {
+    def to_json(self, rig: bool = False) -> dict:
+        """The Motion JSON (plain lists, joints rounded to 0.1 mm): version 1, or with rig=True
+        version 2, which adds the skeleton and each person's rig (see the module)."""
+        d: dict = {
             "fps": self.fps, "skeleton": SKELETON_NAME,
             "people": [{"joints": np.round(p.astype(np.float64), DECIMALS).tolist()}
                        for p in self.people],
             "plan": self.plan, "metrics": self.metrics,
         }
+        if rig:
+            from interplay.motion.kinematics import floor_height
+            from interplay.motion.rig import solve_rig
+            people = [p.astype(np.float64) for p in self.people]
+            floor = floor_height(people)
+            d = {"schema": SCHEMA_V2, **d, "joint_names": list(JOINT_NAMES),
+                 "parents": list(PARENTS), "rig_convention": RIG_CONVENTION}
+            for person, joints in zip(d["people"], people):
+                r = solve_rig(joints, floor=floor)
+                person["rig"] = {key: np.round(value, RIG_DECIMALS).tolist() for key, value in
+                                 (("offsets", r.offsets), ("root", r.root), ("rotations", r.rotations))}
         if self.highlights is not None:
             d["highlights"] = self.highlights
         if self.prompt:
@@ -88,6 +118,10 @@ class Motion:
             raise ValueError("motion JSON must be an object")
         if d.get("fps", FPS) != FPS:
             raise ValueError(f"motion JSON must be {FPS} fps, got {d.get('fps')!r}")
+        schema = d.get("schema")
+        if schema is not None and schema not in SCHEMAS:
+            raise ValueError(f"unknown motion JSON schema {schema!r}; this version reads "
+                             f"{', '.join(SCHEMAS)} and version 1 (no 'schema')")
         if d.get("skeleton", SKELETON_NAME) != SKELETON_NAME:
             raise ValueError(f"unknown skeleton {d.get('skeleton')!r}, expected {SKELETON_NAME!r}")
         people = d.get("people")
@@ -97,6 +131,8 @@ class Motion:
         for i, p in enumerate(people):
             if not isinstance(p, dict) or "joints" not in p:
                 raise ValueError(f"person {i}: expected an object with 'joints'")
+            if schema == SCHEMA_V2 and not isinstance(p.get("rig"), dict):
+                raise ValueError(f"person {i}: a {SCHEMA_V2} motion needs each person's 'rig'")
             joints.append(p["joints"])
         for key in ("plan", "metrics"):
             if not isinstance(d.get(key) or {}, dict):

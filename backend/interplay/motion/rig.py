@@ -314,6 +314,24 @@ def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: flo
     return Rig(offsets=offsets.copy(), root=joints[:, sk.PELVIS].copy(), rotations=quats)
 
 
+def rig_from_json(person: dict) -> Rig:
+    """The Rig of one person of a version-2 Motion JSON ({"rig": {"offsets", "root",
+    "rotations"}}); ValueError when it is missing or malformed."""
+    block = person.get("rig") if isinstance(person, dict) else None
+    if not isinstance(block, dict):
+        raise ValueError("the person has no 'rig' (a version-1 motion: solve_rig its joints)")
+    try:
+        offsets, root, rotations = (np.asarray(block[k], dtype=np.float64)
+                                    for k in ("offsets", "root", "rotations"))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise ValueError(f"'rig' needs numeric 'offsets', 'root' and 'rotations': {exc}") from None
+    t = root.shape[0] if root.ndim == 2 else -1
+    if offsets.shape != (sk.NUM_JOINTS, 3) or root.shape != (t, 3) or rotations.shape != (t, sk.NUM_JOINTS, 4):
+        raise ValueError(f"'rig' shapes must be offsets (22, 3), root (T, 3), rotations (T, 22, 4); "
+                         f"got {offsets.shape}, {root.shape}, {rotations.shape}")
+    return Rig(offsets=offsets, root=root, rotations=rotations / np.linalg.norm(rotations, axis=-1, keepdims=True))
+
+
 def global_rotations(rig: Rig) -> np.ndarray:
     """Global rotation matrices (T, 22, 3, 3) of every joint."""
     return forward_kinematics(rig.matrices(), rig.root, rig.offsets)[1]

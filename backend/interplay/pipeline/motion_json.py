@@ -41,11 +41,12 @@ def joints_list(joints: np.ndarray) -> list:
 
 
 def motion_file(m: StoredMotion) -> dict:
-    """The Motion JSON of a stored motion (what the JSON export downloads); reads back with
+    """The Motion JSON of a stored motion as the JSON export downloads it: version 2, with the
+    skeleton and each person's rig (`Motion.to_json(rig=True)`); reads back with
     `Motion.from_json`."""
     motion = Motion(people=m.people, plan=m.plan or {}, metrics=m.metrics or {},
                     highlights=m.highlights, prompt=m.prompt, seed=m.seed)
-    return {**motion.to_json(), "id": m.id}
+    return {**motion.to_json(rig=True), "id": m.id}
 
 
 def motion_payload(m: StoredMotion) -> dict:

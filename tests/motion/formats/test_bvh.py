@@ -9,6 +9,7 @@ from interplay.motion import skeleton as sk
 from interplay.motion.formats.bvh import read_bvh, smpl22_positions, write_bvh
 from interplay.motion.kinematics import fit_to_skeleton
 from interplay.motion.retarget.cmu_daz import load_cmu_bvh, load_salsa_pair
+from tests.helpers.bvh_readers import bvhio_positions
 from tests.helpers.paths import REPO
 
 RAW = REPO / "tests" / "fixtures" / "raw"
@@ -193,3 +194,76 @@ def test_threejs_bvhloader_reads_our_file_to_the_same_joints(real_clips, tmp_pat
     out = json.loads(run.stdout)
     got = np.stack([np.array(out[n]) for n in sk.JOINT_NAMES], axis=1)
     assert np.abs(got - joints).max() < 1e-3
+
+
+# --- Presets, read back by a parser nobody here wrote (bvhio, a dev dependency) ------------
+
+PRESETS = [  # fps, units, up, names: every value of each at least once
+    (20, "m", "y", "smpl"), (24, "cm", "z", "mixamo"), (30, "m", "z", "smpl"),
+    (60, "cm", "y", "mixamo"), (24, "m", "y", "smpl"),
+]
+
+
+@pytest.mark.parametrize("fps,units,up,names", PRESETS)
+def test_each_preset_reads_back_in_bvhio_within_1mm(real_clips, tmp_path, fps, units, up, names):
+    from interplay.motion.formats.bvh import UNITS, Z_UP, joint_names
+    from interplay.motion.rig import resample_rig, rig_positions, solve_rig
+    joints, _ = fit_to_skeleton(real_clips["jump"][:60])          # on fixed bones, 20 fps
+    path = tmp_path / "a.bvh"
+    path.write_text(write_bvh(joints, out_fps=fps, units=units, up=up, names=names))
+    got, frames, frame_time = bvhio_positions(path, joint_names(names))
+    # The requested rate: frames over the same duration, and the header's Frame Time.
+    assert frames == int(np.floor((len(joints) - 1) / 20 * fps + 1e-6)) + 1
+    assert abs(1.0 / frame_time - fps) < 1e-3
+    # Undo units and up axis: back to metres, Y up (v_y = Z_UP^T v_z).
+    if up == "z":
+        got = got @ Z_UP
+    got = got / UNITS[units]
+    # At the times both rates share (every 20/gcd-th source frame) the file is the motion.
+    step = 20 // np.gcd(20, fps)
+    shared = got[::fps // np.gcd(20, fps)]
+    assert np.abs(shared - joints[::step][:len(shared)]).max() < 1e-3
+    # Every frame is the resampled rig (rotations slerped), and near the straight-line blend.
+    want = rig_positions(resample_rig(solve_rig(joints), 20, fps))
+    assert np.abs(got - want).max() < 1e-3
+    t = np.arange(frames) / fps * 20
+    lo = np.minimum(np.floor(t + 1e-9).astype(int), len(joints) - 1)
+    hi = np.minimum(lo + 1, len(joints) - 1)
+    w = (t - lo)[:, None, None]
+    assert np.abs(got - (joints[lo] * (1 - w) + joints[hi] * w)).max() < 0.03
+
+
+def test_mixamo_names_map_the_smpl_joints(real_clips):
+    from interplay.motion.formats.bvh import MIXAMO_NAMES
+    text = write_bvh(real_clips["walk"][:5], names="mixamo")
+    bvh = read_bvh(text)
+    assert bvh.names[0] == "Hips" and set(bvh.names) == set(MIXAMO_NAMES)
+    by = dict(zip(sk.JOINT_NAMES, MIXAMO_NAMES))
+    assert [by[n] for n in ("left_collar", "left_shoulder", "left_elbow", "left_wrist")] == \
+        ["LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand"]
+    assert [by[n] for n in ("right_hip", "right_knee", "right_ankle", "right_foot")] == \
+        ["RightUpLeg", "RightLeg", "RightFoot", "RightToeBase"]
+    assert [by[n] for n in ("spine1", "spine2", "spine3", "neck", "head")] == \
+        ["Spine", "Spine1", "Spine2", "Neck", "Head"]
+    # Parents agree: the hierarchy is the same tree under other names.
+    for j, p in enumerate(sk.PARENTS):
+        if p >= 0:
+            assert bvh.parents[bvh.index(MIXAMO_NAMES[j])] == bvh.index(MIXAMO_NAMES[p])
+    np.testing.assert_allclose(smpl22_positions(bvh), smpl22_positions(read_bvh(write_bvh(real_clips["walk"][:5]))),
+                               atol=2e-6)
+
+
+def test_z_up_stands_on_z_and_faces_minus_y(real_clips):
+    joints = real_clips["walk"][:5]
+    pos = smpl22_positions(read_bvh(write_bvh(joints, up="z", units="cm")))
+    assert pos[0, sk.HEAD, 2] - pos[0, sk.LEFT_FOOT, 2] > 100        # cm, up along +Z
+    np.testing.assert_allclose(pos[..., 2], joints[..., 1] * 100, atol=1e-3)
+    np.testing.assert_allclose(pos[..., 1], -joints[..., 2] * 100, atol=1e-3)
+
+
+@pytest.mark.parametrize("kwargs,word", [
+    ({"out_fps": 0}, "fps"), ({"units": "mm"}, "units"), ({"up": "x"}, "up axis"),
+    ({"names": "unreal"}, "joint names")])
+def test_bad_presets_are_refused_with_the_choices(real_clips, kwargs, word):
+    with pytest.raises(ValueError, match=word):
+        write_bvh(real_clips["walk"][:5], **kwargs)

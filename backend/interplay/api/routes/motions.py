@@ -4,6 +4,7 @@ skeleton description the viewer draws with."""
 from __future__ import annotations
 
 import json
+from enum import IntEnum
 from typing import Annotated, Literal
 
 from fastapi import APIRouter, HTTPException, Query, Response
@@ -15,6 +16,15 @@ from interplay.pipeline.motion_json import motion_file, motion_payload
 from interplay.store import StoredMotion
 
 router = APIRouter(prefix="/api", tags=["motions"])
+
+
+class BvhFps(IntEnum):
+    """The BVH export's frame rates (`bvh.FPS_CHOICES`); an enum, as a query string "24"
+    validates into it (a Literal of ints takes no strings)."""
+    FPS_20 = 20
+    FPS_24 = 24
+    FPS_30 = 30
+    FPS_60 = 60
 
 
 def _load(repo, motion_id: str) -> StoredMotion:
@@ -51,6 +61,13 @@ def export_motion(motion_id: str, repo: RepoDep,
                   person: Annotated[int, Query(ge=0, le=1, description="BVH: which person")] = 0,
                   mesh: Annotated[bool, Query(description="GLB: with the skinned mesh (false: "
                                                           "skeletons and animation only)")] = True,
+                  fps: Annotated[BvhFps, Query(
+                      description="BVH: frames per second (resampled; the motion is 20)")] = BvhFps.FPS_20,
+                  units: Annotated[Literal["m", "cm"], Query(description="BVH: m or cm")] = "m",
+                  up: Annotated[Literal["y", "z"], Query(
+                      description="BVH: up axis, y or z (z: facing -Y, as in Blender)")] = "y",
+                  names: Annotated[Literal["smpl", "mixamo"], Query(
+                      description="BVH: joint names, smpl or mixamo (Hips, LeftUpLeg, …)")] = "smpl",
                   ) -> Response:
     motion = _load(repo, motion_id)
     if format == "glb":
@@ -68,7 +85,10 @@ def export_motion(motion_id: str, repo: RepoDep,
         raise HTTPException(422, f"person {person} does not exist: this motion has "
                                  f"{motion.persons} person(s), numbered from 0")
     from interplay.motion.formats.bvh import write_bvh
-    text = write_bvh(motion.people[person].astype("float64"), fps=motion.fps)
+    from interplay.motion.kinematics import floor_height
+    people = [p.astype("float64") for p in motion.people]
+    text = write_bvh(people[person], fps=motion.fps, out_fps=int(fps), units=units, up=up, names=names,
+                     floor=floor_height(people))
     return Response(text, media_type="text/plain; charset=utf-8", headers={
         "Content-Disposition": f'attachment; filename="interplay-{motion.id}-person{person}.bvh"'})
 

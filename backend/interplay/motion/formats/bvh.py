@@ -8,8 +8,11 @@ values (position channels *replace* the offset, as Blender's importer reads them
 in our data and every file we write has a zero ROOT offset and no position channels below
 the root, where all readers agree).
 
-Writing targets our 22-joint skeleton: IK on fixed bone lengths → local Euler angles, a
-standard HIERARCHY/MOTION text in metres that Blender and three.js's BVHLoader read.
+Writing targets our 22-joint skeleton: the rotations of `rig.solve_rig` (continuous, knees
+and elbows as hinges) → local Euler angles, a standard HIERARCHY/MOTION text that Blender and
+three.js's BVHLoader read, with presets: frame rate (resampled: root positions linearly,
+rotations by slerp), units (m or cm), up axis (Y, or Z with the character facing -Y as in
+Blender) and joint names (SMPL's, or Mixamo-style for rigs that map bones by name).
 """
 
 from __future__ import annotations
@@ -22,7 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion import skeleton as sk
-from interplay.motion.kinematics import fit_offsets, forward_kinematics, inverse_kinematics
+from interplay.motion.kinematics import forward_kinematics
+from interplay.motion.rig import end_sites, resample_rig, solve_rig
 from interplay.motion.rotations import axis_rotation, euler_to_matrix, matrix_to_euler
 
 _CHANNEL = re.compile(r"^([XYZ])(position|rotation)$", re.IGNORECASE)
@@ -265,36 +269,55 @@ def read_bvh(text_or_path: str | Path) -> Bvh:
                motion=values[:n_frames * width].reshape(n_frames, width))
 
 
+# Export presets (the CLI's flags and the API's query parameters offer these).
+FPS_CHOICES: tuple[int, ...] = (20, 24, 30, 60)
+UNITS: dict[str, float] = {"m": 1.0, "cm": 100.0}          # file units per metre
+UP_AXES: tuple[str, ...] = ("y", "z")
+NAMINGS: tuple[str, ...] = ("smpl", "mixamo")
+# Mixamo-style names of the 22 SMPL joints, in SMPL order. SMPL's collar is Mixamo's
+# Shoulder, its shoulder the (upper) Arm, elbow the ForeArm, wrist the Hand; hip the UpLeg,
+# knee the Leg, ankle the Foot, foot (the ball of the foot) the ToeBase; spine1-3 are
+# Spine, Spine1, Spine2.
+MIXAMO_NAMES: tuple[str, ...] = (
+    "Hips", "LeftUpLeg", "RightUpLeg", "Spine", "LeftLeg", "RightLeg",
+    "Spine1", "LeftFoot", "RightFoot", "Spine2", "LeftToeBase", "RightToeBase",
+    "Neck", "LeftShoulder", "RightShoulder", "Head", "LeftArm",
+    "RightArm", "LeftForeArm", "RightForeArm", "LeftHand", "RightHand",
+)
+# Y-up → Z-up: +90° about X, (x, y, z) → (x, -z, y): up +Y becomes +Z, forward +Z becomes
+# -Y (Blender's front view looks along +Y at a character facing -Y).
+Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+
+
+def joint_names(naming: str = "smpl") -> tuple[str, ...]:
+    """The 22 joints' names in SMPL order under a naming ("smpl" or "mixamo")."""
+    if naming not in NAMINGS:
+        raise ValueError(f"joint names must be one of {', '.join(NAMINGS)}, got {naming!r}")
+    return sk.JOINT_NAMES if naming == "smpl" else MIXAMO_NAMES
+
+
 def smpl22_positions(bvh: Bvh) -> np.ndarray:
-    """Joints (T, 22, 3) in SMPL order from a BVH whose joints carry our names (one we wrote)."""
+    """Joints (T, 22, 3) in SMPL order, file units and axes, from a BVH whose joints carry
+    our names, SMPL's or Mixamo-style (one we wrote)."""
     pos = bvh.positions()
-    return pos[:, [bvh.index(n) for n in sk.JOINT_NAMES]]
+    names = MIXAMO_NAMES if MIXAMO_NAMES[0] in bvh.names else sk.JOINT_NAMES
+    return pos[:, [bvh.index(n) for n in names]]
 
 
 # Rotation channel order of each joint we write. A Tait–Bryan order locks when its middle
 # angle nears ±90°, so the middle axis is one that turns little: for the root yaw is
 # outermost (people face any way) and pitch sits in the middle; spine, neck and legs put
 # flexion (X) outermost and side bend/abduction (Z) in the middle; arms, whose bones lie
-# along X, put their twist (X) in the middle.
-def _write_order(name: str) -> str:
+# along X, put their twist (X) in the middle. Z-up files use the same axes, renamed
+# (Y-up's Y is Z-up's Z and its Z is Z-up's -Y).
+def _write_order(name: str, up: str = "y") -> str:
     if name == "pelvis":
-        return "YXZ"
-    if name.split("_")[-1] in ("collar", "shoulder", "elbow", "wrist"):
-        return "ZXY"
-    return "XZY"
-
-
-def _end_site(joint: int, offsets: np.ndarray) -> np.ndarray | None:
-    """End Site offsets (metres, in the leaf's rest frame) scaled to the person's size:
-    crown above the head, hand along the forearm, toe tip ahead of the ball of the foot."""
-    scale = np.linalg.norm(offsets[1:], axis=1).sum() / np.linalg.norm(sk.REST_OFFSETS[1:], axis=1).sum()
-    if joint == sk.HEAD:
-        return np.array([0.0, 0.10, 0.0]) * scale
-    if joint in (sk.LEFT_HAND, sk.RIGHT_HAND):
-        return offsets[joint] / np.linalg.norm(offsets[joint]) * 0.08 * scale
-    if joint in (sk.LEFT_FOOT, sk.RIGHT_FOOT):
-        return np.array([0.0, 0.0, 0.05]) * scale
-    return None
+        order = "YXZ"
+    elif name.split("_")[-1] in ("collar", "shoulder", "elbow", "wrist"):
+        order = "ZXY"
+    else:
+        order = "XZY"
+    return order if up == "y" else order.translate(str.maketrans("YZ", "ZY"))
 
 
 def _fmt(values: np.ndarray, digits: int) -> str:
@@ -302,12 +325,12 @@ def _fmt(values: np.ndarray, digits: int) -> str:
     return " ".join(f"{v:.{digits}f}" for v in np.round(values, digits) + 0.0)
 
 
-def _write_joint(j: int, depth: int, offsets: np.ndarray, local: np.ndarray,
-                 lines: list[str], columns: list[np.ndarray]) -> None:
+def _write_joint(j: int, depth: int, offsets: np.ndarray, local: np.ndarray, ends: dict,
+                 names: tuple[str, ...], up: str, lines: list[str], columns: list[np.ndarray]) -> None:
     """Append joint j's HIERARCHY block (with its subtree) to lines and its Euler angles
     (T, 3) in degrees to columns, in the same depth-first order."""
-    name, tab = sk.JOINT_NAMES[j], "\t" * depth
-    order = _write_order(name)
+    name, tab = names[j], "\t" * depth
+    order = _write_order(sk.JOINT_NAMES[j], up)
     rot_channels = " ".join(f"{a}rotation" for a in order)
     root = j == sk.PELVIS
     lines += [f"{tab}{'ROOT' if root else 'JOINT'} {name}", f"{tab}{{",
@@ -316,18 +339,35 @@ def _write_joint(j: int, depth: int, offsets: np.ndarray, local: np.ndarray,
     # Unwrapping keeps each angle continuous over time (same rotations, smoother curves).
     columns.append(np.rad2deg(np.unwrap(matrix_to_euler(local[:, j], order), axis=0)))
     for c in sk.children(j):
-        _write_joint(c, depth + 1, offsets, local, lines, columns)
-    end = _end_site(j, offsets)
-    if end is not None:
-        lines += [f"{tab}\tEnd Site", f"{tab}\t{{", f"{tab}\t\tOFFSET {_fmt(end, 6)}", f"{tab}\t}}"]
+        _write_joint(c, depth + 1, offsets, local, ends, names, up, lines, columns)
+    if j in ends:
+        lines += [f"{tab}\tEnd Site", f"{tab}\t{{", f"{tab}\t\tOFFSET {_fmt(ends[j], 6)}", f"{tab}\t}}"]
     lines.append(f"{tab}}}")
 
 
-def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | None = None) -> str:
-    """One person's joints (T, 22, 3) (metres, Y up) → BVH text: our 22 joints as a standard
-    hierarchy (6 channels on the root, 3 rotation channels elsewhere, End Sites at head,
-    wrists and toes), rest pose = the offsets (fitted from the motion when not given), local
-    rotations from IK. Re-reading reproduces joints that lie on those bone lengths."""
+def check_preset(out_fps: float | None = None, units: str = "m", up: str = "y",
+                 names: str = "smpl") -> None:
+    """ValueError naming the choices when a BVH preset value is not one we write."""
+    if out_fps is not None and not (np.isfinite(out_fps) and out_fps > 0):
+        raise ValueError(f"fps must be positive, got {out_fps}")
+    if units not in UNITS:
+        raise ValueError(f"units must be one of {', '.join(UNITS)}, got {units!r}")
+    if up not in UP_AXES:
+        raise ValueError(f"up axis must be one of {', '.join(UP_AXES)}, got {up!r}")
+    joint_names(names)
+
+
+def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | None = None, *,
+              out_fps: float | None = None, units: str = "m", up: str = "y", names: str = "smpl",
+              floor: float | None = None) -> str:
+    """One person's joints (T, 22, 3) (metres, Y up, `fps` frames a second) → BVH text: our 22
+    joints as a standard hierarchy (6 channels on the root, 3 rotation channels elsewhere,
+    End Sites at head, wrists and toes), rest pose = the offsets (fitted from the motion when
+    not given), local rotations from `rig.solve_rig` (floor: the ground the toe tips keep
+    above, for two people the shared one). Presets: out_fps (default fps; resampled over the
+    same duration, root linearly, rotations by slerp), units "m" or "cm", up "y" or "z",
+    names "smpl" or "mixamo". Re-reading reproduces joints that lie on those bone lengths, in
+    those units and axes."""
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or joints.shape[0] < 1:
         raise ValueError(f"joints must be (T, {sk.NUM_JOINTS}, 3) with T ≥ 1, got {joints.shape}")
@@ -335,16 +375,26 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
         raise ValueError("joints contain NaN or infinite values")
     if not fps > 0:
         raise ValueError(f"fps must be positive, got {fps}")
-    if offsets is None:
-        offsets = fit_offsets(joints)
-    offsets = np.asarray(offsets, dtype=np.float64)
-    if offsets.shape != (sk.NUM_JOINTS, 3):
-        raise ValueError(f"offsets must be ({sk.NUM_JOINTS}, 3), got {offsets.shape}")
-    local, root = inverse_kinematics(joints, offsets)
+    check_preset(out_fps, units, up, names)
+    if offsets is not None:
+        offsets = np.asarray(offsets, dtype=np.float64)
+        if offsets.shape != (sk.NUM_JOINTS, 3):
+            raise ValueError(f"offsets must be ({sk.NUM_JOINTS}, 3), got {offsets.shape}")
+    rate = fps if out_fps is None else float(out_fps)
+    rig = resample_rig(solve_rig(joints, offsets, floor=floor), fps, rate)
+    local, root, offs = rig.matrices(), rig.root, rig.offsets
+    ends = end_sites(offs)
+    if up == "z":
+        local = Z_UP @ local @ Z_UP.T
+        root, offs = root @ Z_UP.T, offs @ Z_UP.T
+        ends = {j: Z_UP @ e for j, e in ends.items()}
+    scale = UNITS[units]
+    root, offs = root * scale, offs * scale
+    ends = {j: e * scale for j, e in ends.items()}
 
     lines, columns = ["HIERARCHY"], [root]
-    _write_joint(sk.PELVIS, 0, offsets, local, lines, columns)
-    lines += ["MOTION", f"Frames: {joints.shape[0]}", f"Frame Time: {1.0 / fps:.8f}"]
+    _write_joint(sk.PELVIS, 0, offs, local, ends, joint_names(names), up, lines, columns)
+    lines += ["MOTION", f"Frames: {rig.frames}", f"Frame Time: {1.0 / rate:.8f}"]
     data = np.concatenate(columns, axis=1)                        # (T, 3 + 22 * 3)
     lines += [_fmt(row[:3], 6) + " " + _fmt(row[3:], 4) for row in data]
     return "\n".join(lines) + "\n"

@@ -1,0 +1,70 @@
+"""`interplay export` (cli/files.py): the BVH presets as flags (--fps, --units, --up, --names),
+read back by bvhio (a parser nobody here wrote), exit 2 on bad values, and the version-2
+JSON with each person's rig."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from interplay.cli import main as cli
+from interplay.motion.clip import default_clips
+from interplay.motion.formats.bvh import UNITS, Z_UP, joint_names
+from interplay.motion.kinematics import fit_to_skeleton
+from interplay.motion.motion import Motion
+from interplay.motion.rig import rig_from_json, rig_positions
+from tests.helpers.bvh_readers import bvhio_positions
+
+
+@pytest.fixture(scope="module")
+def pair_file(tmp_path_factory):
+    """A two-person motion file: a captured pair, on fixed bones, 2 s."""
+    clip = next(c for c in default_clips() if len(c.people) == 2)
+    people = [fit_to_skeleton(np.asarray(p[:40], dtype=np.float64))[0] for p in clip.people]
+    path = tmp_path_factory.mktemp("export") / "pair.json"
+    path.write_text(json.dumps(Motion(people=people, prompt=clip.prompt).to_json()))
+    return path
+
+
+@pytest.mark.parametrize("flags", [
+    ["--fps", "24", "--units", "cm", "--up", "z", "--names", "mixamo", "--person", "1"],
+    ["--fps", "60"], ["--fps", "30", "--up", "z"], []])
+def test_bvh_presets_from_flags_read_back_in_bvhio(pair_file, tmp_path, flags):
+    out = tmp_path / "p.bvh"
+    assert cli.main(["export", str(pair_file), "--format", "bvh", "--out", str(out), *flags]) == 0
+    opts = dict(zip(flags[::2], flags[1::2]))
+    fps, units = int(opts.get("--fps", 20)), opts.get("--units", "m")
+    got, frames, frame_time = bvhio_positions(out, joint_names(opts.get("--names", "smpl")))
+    assert frames == int(np.floor(39 / 20 * fps + 1e-6)) + 1 and abs(1 / frame_time - fps) < 1e-3
+    if opts.get("--up") == "z":
+        got = got @ Z_UP
+    got = got / UNITS[units]
+    joints = Motion.from_json(json.loads(pair_file.read_text())).people[int(opts.get("--person", 0))]
+    every = fps // np.gcd(20, fps)
+    shared = got[::every]
+    want = joints[::20 // np.gcd(20, fps)][:len(shared)]
+    assert np.abs(shared - want).max() < 1e-3
+
+
+@pytest.mark.parametrize("flags,msg", [
+    (["--format", "bvh", "--fps", "25"], "invalid choice"), (["--format", "bvh", "--units", "mm"], "invalid choice"),
+    (["--format", "bvh", "--up", "x"], "invalid choice"), (["--format", "bvh", "--names", "ue"], "invalid choice"),
+    (["--format", "json", "--fps", "30"], "--format bvh only")])
+def test_bad_presets_exit_2_with_a_message(pair_file, tmp_path, capsys, flags, msg):
+    with pytest.raises(SystemExit) as exc:
+        code = cli.main(["export", str(pair_file), "--out", str(tmp_path / "x"), *flags])
+        raise SystemExit(code)
+    assert exc.value.code == 2
+    assert msg in capsys.readouterr().err
+
+
+def test_json_export_is_version_2_and_reads_back(pair_file, tmp_path):
+    out = tmp_path / "m.json"
+    assert cli.main(["export", str(pair_file), "--format", "json", "--out", str(out)]) == 0
+    d = json.loads(out.read_text())
+    assert d["schema"] == "interplay.motion/2" and len(d["joint_names"]) == 22
+    people = Motion.from_json(d).people
+    for person, joints in zip(d["people"], people):
+        assert np.abs(rig_positions(rig_from_json(person)) - joints).max() < 1e-3
