@@ -153,7 +153,8 @@ def _hinge(bone: np.ndarray, child: np.ndarray, u: np.ndarray, v: np.ndarray, a:
     angle to the upper one, on the bending side (theta grows as the limb folds; the rest pose
     is theta = 0 for the template's directions, which rest slightly folded). Returns the
     upper joint's secondary axis that makes the lower joint exactly that hinge (where the
-    angle is reachable), theta, and the rest lower bone turned by theta, R(a, theta) v."""
+    angle is reachable), as long as the sine of the bend (how sure it is: a straight limb has
+    no bend plane), theta, and the rest lower bone turned by theta, R(a, theta) v."""
     cos = np.sum(bone * child, axis=-1)
     av = a @ v
     v_perp = v - av * a
@@ -161,9 +162,11 @@ def _hinge(bone: np.ndarray, child: np.ndarray, u: np.ndarray, v: np.ndarray, a:
     size, phi = np.hypot(big_b, big_c), np.arctan2(big_c, big_b)
     theta = phi + np.arccos(np.clip((cos - big_a) / max(size, 1e-12), -1.0, 1.0))
     turned = axis_angle_to_matrix(a[None] * theta[:, None]) @ v
-    observed = _frame(bone, _perp(child, bone))
+    across = _perp(child, bone)                                  # its length: sin(bend)
+    observed = _frame(bone, across)
     rest = _frame(np.broadcast_to(u, turned.shape), _perp(turned, u))
-    return np.einsum("tij,tkj,k->ti", observed, rest, a), theta, turned
+    axis = np.einsum("tij,tkj,k->ti", observed, rest, a)
+    return axis * np.linalg.norm(across, axis=-1, keepdims=True), theta, turned
 
 
 def _turn_at_most(a: np.ndarray, b: np.ndarray, axis: np.ndarray, limit: float) -> np.ndarray:
@@ -180,8 +183,9 @@ def _turn_at_most(a: np.ndarray, b: np.ndarray, axis: np.ndarray, limit: float) 
 def _propagate(bone: np.ndarray, ref: np.ndarray, start: np.ndarray) -> np.ndarray:
     """Secondary axes (T, 3), unit and perpendicular to the unit bones (T, 3), all in the
     parent's frame: each frame's reference made perpendicular to the bone, with the previous
-    frame's axis blended in where the reference is short (alone when it vanishes), and turning
-    at most _STEP per frame. The reference's size is the sine of the angle between it and the
+    frame's axis blended in where the reference is short (alone when it vanishes; below _SURE
+    the reference weighs size² / _SURE against 1 - size / _SURE), turning at most _STEP per
+    frame. The reference's size is the sine of the angle between it and the
     bone (a hinge's: the sine of the bend).
 
     The walk starts at the first frame whose reference is sure and goes forward from there
@@ -191,12 +195,14 @@ def _propagate(bone: np.ndarray, ref: np.ndarray, start: np.ndarray) -> np.ndarr
     ref_p = _perp(ref, bone)
     size = np.linalg.norm(ref_p, axis=-1)
     keep = np.clip(1.0 - size / _SURE, 0.0, 1.0)
+    # A short reference counts for less still (its direction is noise when it nearly vanishes).
+    ref_p = ref_p * np.clip(size / _SURE, 0.0, 1.0)[:, None]
     out = np.empty((t, 3))
     sure = np.flatnonzero(size >= _SURE)
     first = int(sure[0]) if len(sure) else 0
     prev = start
     if len(sure):
-        prev = ref_p[first] / size[first]
+        prev = ref_p[first] / np.linalg.norm(ref_p[first])
     for order in (range(first, t), range(first - 1, -1, -1)):
         if order.start < first:
             prev = out[first]
