@@ -15,6 +15,7 @@ import time
 from pathlib import Path
 
 from interplay.data.card import write_card
+from interplay.data.licences import BANDAI_NAMCO, CMU, DEEPMIMIC, commercial_only
 from interplay.motion.clip import DATA_DIR, Caption, Clip, save_clips
 from interplay.motion.labels import cmu_prompt, label_family
 
@@ -124,9 +125,118 @@ def build_cmu_8action(src: Path) -> list[Clip]:
     return clips
 
 
+def _cmu_trials(src: Path, folder: str) -> dict[tuple[int, int], str]:
+    """{(subject, trial): raw path} of the CMU trials a source folder holds."""
+    out: dict[tuple[int, int], str] = {}
+    if folder == "cmu-bvh":
+        for path in sorted((src / "cmu-bvh").glob("*/*.bvh")):
+            subject, trial = (int(x) for x in path.stem.split("_")[:2])
+            out[subject, trial] = f"cmu-bvh/{path.parent.name}/{path.name}"
+    elif folder == "cmu-asfamc":
+        from interplay.motion.retarget.cmu_acclaim import trial_of
+        for path in sorted((src / "cmu-asfamc").glob("*/*.amc")):
+            out[trial_of(path)] = f"cmu-asfamc/{path.parent.name}/{path.name}"
+    return out
+
+
+def _skip(rel: str, reasons: list[str]) -> None:
+    print(f"  skipped {rel}: {'; '.join(reasons)}", flush=True)
+    SKIPPED.append((rel, reasons))
+
+
+def build_bandai(src: Path) -> list[Clip]:
+    from interplay.motion.retarget.bandai_namco import bandai_prompt, load_bandai, read_labels
+
+    clips = []
+    for path in sorted((src / "bandai-namco").glob("dataset-*/data/*.bvh")):
+        rel = f"bandai-namco/{path.parent.parent.name}/data/{path.name}"
+        labels = read_labels(path)
+        joints, offsets, meta = load_bandai(path)
+        meta.update({"file": rel, **labels})
+        if meta["defects"]:
+            _skip(rel, meta["defects"])
+            continue
+        clips.append(Clip(id=f"bandai:{path.stem}", source="bandai-namco", people=[joints],
+                          offsets=[offsets], label=f"{labels['content']} ({labels['style']})",
+                          prompt=bandai_prompt(labels["content"], labels["style"]),
+                          licence=BANDAI_NAMCO.name, meta=meta))
+    return clips
+
+
+def build_cmu_asfamc(src: Path) -> list[Clip]:
+    """CMU's original Acclaim trials; a trial cmu-bvh already holds is left out (one capture
+    once, so it cannot sit in two splits)."""
+    from interplay.motion.retarget.cmu_acclaim import load_cmu_acclaim, trial_of
+    from interplay.motion.retarget.cmu_daz import read_cmu_index
+
+    index = read_cmu_index(src / "cmu-index" / "cmu_index.csv")
+    have = _cmu_trials(src, "cmu-bvh")
+    clips = []
+    for path in sorted((src / "cmu-asfamc").glob("*/*.amc")):
+        rel = f"cmu-asfamc/{path.parent.name}/{path.name}"
+        subject, trial = trial_of(path)
+        if (subject, trial) in have:
+            _skip(rel, [f"the same CMU trial as {have[subject, trial]}, which the set keeps"])
+            continue
+        description, index_fps = index.get((subject, trial), ("unknown", 120))
+        joints, offsets, meta = load_cmu_acclaim(path)
+        meta.update({"file": rel, "subject": subject, "trial": trial, "index_fps": index_fps})
+        if meta["defects"]:
+            _skip(rel, meta["defects"])
+            continue
+        clips.append(Clip(id=f"cmu-asfamc:{subject:02d}_{trial:02d}", source="cmu-asfamc",
+                          people=[joints], offsets=[offsets], label=description,
+                          prompt=cmu_prompt(description), licence=CMU.name, meta=meta))
+    return clips
+
+
+def build_cmu_iclone(src: Path) -> list[Clip]:
+    """The CC_Base retargets of CMU trials, labelled by `CMU data.csv`; a trial that cmu-bvh
+    or cmu-asfamc already holds is left out."""
+    from interplay.motion.retarget.cmu_iclone import load_cmu_iclone, read_cmu_index, trial_of
+
+    index = read_cmu_index(src / "cmu-iclone" / "CMU data.csv")
+    have = {**_cmu_trials(src, "cmu-asfamc"), **_cmu_trials(src, "cmu-bvh")}
+    clips = []
+    for path in sorted((src / "cmu-iclone" / "subjects").glob("*/*.bvh")):
+        rel = f"cmu-iclone/subjects/{path.parent.name}/{path.name}"
+        subject, trial = trial_of(path)
+        if (subject, trial) in have:
+            _skip(rel, [f"the same CMU trial as {have[subject, trial]}, which the set keeps"])
+            continue
+        description, index_fps = index.get((subject, trial), ("unknown", 120))
+        joints, offsets, meta = load_cmu_iclone(path)
+        meta.update({"file": rel, "subject": subject, "trial": trial, "index_fps": index_fps})
+        if meta["defects"]:
+            _skip(rel, meta["defects"])
+            continue
+        clips.append(Clip(id=f"cmu-iclone:{subject:02d}_{trial:02d}", source="cmu-iclone",
+                          people=[joints], offsets=[offsets], label=description,
+                          prompt=cmu_prompt(description), licence=CMU.name, meta=meta))
+    return clips
+
+
+def build_deepmimic(src: Path) -> list[Clip]:
+    from interplay.motion.retarget.deepmimic import clip_name, deepmimic_prompt, load_deepmimic
+
+    clips = []
+    for path in sorted((src / "deepmimic" / "motions").glob("humanoid3d_*.txt")):
+        rel = f"deepmimic/motions/{path.name}"
+        joints, offsets, meta = load_deepmimic(path)
+        meta["file"] = rel
+        if meta["defects"]:
+            _skip(rel, meta["defects"])
+            continue
+        name = clip_name(path)
+        clips.append(Clip(id=f"deepmimic:{name}", source="deepmimic", people=[joints], offsets=[offsets],
+                          label=name, prompt=deepmimic_prompt(name), licence=DEEPMIMIC.name, meta=meta))
+    return clips
+
+
 def assign_splits(clips: list[Clip]) -> None:
     """By trial, never by window. HDM05: one held-out actor is test; cmu-8action keeps its own
-    train/test folders; CMU trials and salsa pairs are split per action family by stable hash."""
+    train/test folders; Bandai Namco by take within each (dataset, content); CMU trials, salsa
+    pairs and the other sources' clips are split per action family by stable hash."""
     groups: dict[str, list[str]] = {}
     hdm_rest: dict[str, list[str]] = {}
     for c in clips:
@@ -137,6 +247,10 @@ def assign_splits(clips: list[Clip]) -> None:
                 hdm_rest.setdefault(c.label, []).append(c.id)
         elif c.source == "cmu-8action":
             c.split = "test" if c.meta.get("folder") == "test" else "train"
+        elif c.source == "bandai-namco":
+            # No actor labels (one aligned figure for all three actors): whole takes, ranked
+            # within each content of each dataset, so every content has unseen takes in test.
+            groups.setdefault(f"bandai-namco:{c.meta['dataset']}:{c.meta['content']}", []).append(c.id)
         else:
             groups.setdefault(f"{c.source}:{label_family(c.prompt)}", []).append(c.id)
     split = stratified_split(groups)
@@ -170,6 +284,8 @@ def build_composed(clips: list[Clip], per_kind: dict[str, int] = COMPOSED_PER_KI
     from interplay.motion.pair.compose import KINDS, compose_set, pool_of
 
     COMPOSE_NOTES.clear()
+    # Bases never come from non-commercial sources, so composed.npz carries no NC term.
+    clips = commercial_only(clips)
     out: list[Clip] = []
     for split, n in per_kind.items():
         pool = pool_of(clips, split)
@@ -186,7 +302,9 @@ def build_composed(clips: list[Clip], per_kind: dict[str, int] = COMPOSED_PER_KI
 
 
 BUILDERS = {"cmu-bvh": build_cmu_bvh, "cmu-salsa": build_salsa, "hdm05": build_hdm05,
-            "cmu-8action": build_cmu_8action}
+            "cmu-8action": build_cmu_8action, "bandai-namco": build_bandai,
+            "cmu-asfamc": build_cmu_asfamc, "cmu-iclone": build_cmu_iclone,
+            "deepmimic": build_deepmimic}
 
 
 def main(argv: list[str] | None = None) -> int:

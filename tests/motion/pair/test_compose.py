@@ -10,7 +10,7 @@ from interplay.motion.kinematics import facing_angle
 from interplay.motion.metrics import clip_metrics, frame_highlights
 from interplay.motion.pair import compose as C
 from interplay.motion.pair import placement as pl
-from interplay.motion.pair.bases import standing_bases
+from interplay.motion.pair.bases import NOT_AHEAD, standing_bases, walk_bases
 from interplay.motion.pair.body import body_spheres, surface_gaps
 
 N = 8        # samples per kind (seeds 0 … N-1)
@@ -153,9 +153,16 @@ def test_walks_side_by_side_share_heading_and_speed(composed):
     assert held and np.mean(np.array(held) >= 0.8) >= 0.5
 
 
+def test_walk_bases_are_walks_ahead(real):
+    bases = walk_bases(real)
+    assert bases and not any(w in b.clip.prompt for b in bases for w in NOT_AHEAD)
+    # Bandai Namco's backward, diagonal and turning walks are there, and none is a base.
+    assert any("backwards" in c.prompt for c in real) and all("backwards" not in b.clip.prompt for b in bases)
+
+
 def test_compose_set_skips_kinds_without_bases_and_checks_input(real):
     walks_only = [c for c in real if "walk" in c.prompt and c.split == "train"
-                  and not standing_bases([c])][:4]
+                  and not standing_bases([c]) and walk_bases([c])][:4]
     got = C.compose_set(2, 0, clips=walks_only)
     assert {c.meta["kind"] for c in got} <= {"walk_side_by_side"} and len(got) == 2
     with pytest.raises(ValueError):

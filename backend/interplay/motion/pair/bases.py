@@ -94,14 +94,25 @@ def standing_bases(clips, cfg: StandConfig = StandConfig()) -> list[Base]:
             for s, e in _runs(standing_mask(c.people[0], cfg), cfg.min_frames)]
 
 
-def walk_bases(clips, min_frames: int = 40, min_speed: float = 0.5) -> list[Base]:
-    """Whole real level walks (at least `min_frames`, pelvis faster than `min_speed` m/s)."""
+# Walks that are not a straight walk ahead (backwards, sideways, turning …) are no bases.
+NOT_AHEAD = ("uneven", "backward", "sideways", "diagonal", "turn", "circle", "to the left",
+             "to the right")
+
+
+def walk_bases(clips, min_frames: int = 40, min_speed: float = 0.5, ahead: float = 0.8) -> list[Base]:
+    """Whole real level walks ahead (at least `min_frames`, pelvis faster than `min_speed`
+    m/s, travelling within acos(`ahead`) of the way the person faces at the start)."""
     out = []
     for c in _real_singles(clips):
-        if "walk" not in c.prompt or "uneven" in c.prompt or c.frames < min_frames:
+        if "walk" not in c.prompt or any(w in c.prompt for w in NOT_AHEAD) or c.frames < min_frames:
             continue
-        p = c.people[0][:, sk.PELVIS].astype(np.float64)
-        if np.linalg.norm((p[-1] - p[0])[[0, 2]]) / (c.frames - 1) * sk.FPS >= min_speed:
+        j = c.people[0].astype(np.float64)
+        travel = (j[-1, sk.PELVIS] - j[0, sk.PELVIS])[[0, 2]]
+        dist = float(np.linalg.norm(travel))
+        if dist / (c.frames - 1) * sk.FPS < min_speed:
+            continue
+        fwd = np.array([np.sin(facing_angle(j[0])), np.cos(facing_angle(j[0]))])
+        if travel @ fwd >= ahead * dist:
             out.append(Base(c, 0, c.frames))
     return out
 

@@ -242,6 +242,20 @@ _COMPOSERS = {"handshake": _handshake, "high_five": _high_five, "hug": _hug, "pu
 
 # ---- public --------------------------------------------------------------------------------
 
+# Kinds whose hands must not touch the partner before the reach starts: two bases can stand
+# so close (short arms, hands held in front) that a wrist already meets the other body.
+HANDS_APART_FIRST = ("handshake", "high_five")
+
+
+def _check_hands_apart(a: np.ndarray, b: np.ndarray, contact: dict) -> None:
+    from interplay.motion.metrics import frame_highlights
+
+    before = contact["start"] - contact["ramp_in"]
+    hits = frame_highlights([a[:before], b[:before]])["contacts"] if before > 0 else []
+    if any(j in (sk.LEFT_HAND, sk.RIGHT_HAND) for f in hits for _, j in f):
+        raise ValueError("a hand touches the partner before the reach")
+
+
 def _licence(bases: list[dict]) -> str:
     names = sorted({b["licence"] for b in bases})
     return " + ".join(names)
@@ -263,9 +277,11 @@ def compose(kind: str, seed: int, seconds: float = 4.0, clips=None, split: str =
         raise ValueError(f"no {'walk' if kind == 'walk_side_by_side' else 'standing'} bases "
                          f"in the {pool.split} split for {kind}")
     rng = np.random.default_rng([seed, KINDS.index(kind)])
-    for attempt in range(8):      # a draw can fail (a chest out of reach): draw again
+    for attempt in range(8):      # a draw can fail (a chest out of reach, hands touching early): draw again
         try:
             a, b, place, contact, prompts = _COMPOSERS[kind](rng, pool, frames)
+            if kind in HANDS_APART_FIRST:
+                _check_hands_apart(a.joints, b.joints, contact)
             break
         except ValueError:
             if attempt == 7:
