@@ -18,7 +18,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from interplay import __version__
 from interplay.api import stream
 from interplay.api.jobs import JobManager
-from interplay.api.routes import edits, jobs, motions, pages
+from interplay.api.routes import edits, jobs, library, motions, pages, rerun
 from interplay.generators.base import Generator
 from interplay.pipeline.requests import readable_errors
 from interplay.settings import Settings, get_settings
@@ -76,5 +76,7 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
     app.include_router(stream.router)
     app.include_router(motions.router)
     app.include_router(edits.router)
+    app.include_router(rerun.router)
+    app.include_router(library.router)
     app.include_router(pages.router)  # last: it has a catch-all for top-level files
     return app

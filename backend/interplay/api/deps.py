@@ -5,12 +5,14 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from fastapi import Depends, HTTPException, Request
+from fastapi import Depends, Header, HTTPException, Request
 
 from interplay.api.jobs import JobManager
 from interplay.generators.base import Generator
 from interplay.settings import Settings
-from interplay.store import MotionRepository
+from interplay.store import MotionRepository, valid_id
+
+CLIENT_HEADER = "X-Interplay-Client"
 
 
 def app_settings(request: Request) -> Settings:
@@ -33,7 +35,20 @@ def generator(request: Request) -> Generator:
     return gen
 
 
+def client_id(x_interplay_client: Annotated[str | None, Header(
+        description="This browser's random id (22–64 URL-safe characters): what it makes is "
+                    "listed by GET /api/motions?client=<id>.")] = None) -> str | None:
+    """The studio's per-browser id sent with jobs and edits, or None; malformed → 422."""
+    if x_interplay_client is None or x_interplay_client == "":
+        return None
+    if not valid_id(x_interplay_client):
+        raise HTTPException(422, f"{CLIENT_HEADER}: must be 22–64 characters of A–Z, a–z, "
+                                 "0–9, '_' or '-'")
+    return x_interplay_client
+
+
 SettingsDep = Annotated[Settings, Depends(app_settings)]
 RepoDep = Annotated[MotionRepository, Depends(repository)]
 JobsDep = Annotated[JobManager, Depends(job_manager)]
 GeneratorDep = Annotated[Generator, Depends(generator)]
+ClientDep = Annotated[str | None, Depends(client_id)]

@@ -42,6 +42,7 @@ class JobSpec:
     trajectory: dict | None = field(default=None, hash=False)   # {person, points | shape …}
     mode: str = "generate"                                      # "generate" | "react"
     actor_motion_id: str | None = None
+    client_id: str | None = None    # the browser that asked (X-Interplay-Client), for its list
 
     @property
     def frames(self) -> int:

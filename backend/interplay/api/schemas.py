@@ -155,6 +155,29 @@ class SkeletonOut(BaseModel):
     fps: int
 
 
+class SegmentRerun(BaseModel):
+    seed: int | None = Field(default=None, ge=0, le=MAX_SEED, strict=True,
+                             description="Sampling seed for the segment, a JSON integer "
+                                         "0 … 2³¹−1; random (and stored) when omitted.")
+
+
+class MotionListItem(BaseModel):
+    id: str
+    prompt: str
+    persons: int
+    seconds: float
+    frames: int
+    created_at: str | None
+    parent_id: str | None = Field(description="Set for a version made from another motion.")
+    edit: dict | None = Field(description="What made this version (null: generated).")
+    first_frame: list[list[list[float]]] = Field(description="The first frame per person: "
+                                                 "[[x, y, z] × 22], metres, for a thumbnail.")
+
+
+class MotionList(BaseModel):
+    motions: list[MotionListItem] = Field(description="Newest first.")
+
+
 class ErrorOut(BaseModel):
     detail: str
 

@@ -37,12 +37,17 @@ def make_engine(url: str) -> Engine:
 
 
 def _add_missing_columns(engine: Engine) -> None:
-    """Columns added to `motions` after a database was created (nullable JSON), added in place
-    so an existing store keeps working."""
+    """Columns added to `motions` after a database was created (nullable: JSON, client_id),
+    added in place with their indexes so an existing store keeps working."""
     have = {c["name"] for c in inspect(engine).get_columns("motions")}
     table = Base.metadata.tables["motions"]
     with engine.begin() as conn:
+        added = set()
         for col in table.columns:
             if col.name not in have and col.nullable:
                 kind = col.type.compile(dialect=engine.dialect)
                 conn.execute(text(f'ALTER TABLE motions ADD COLUMN "{col.name}" {kind}'))
+                added.add(col.name)
+        for index in table.indexes:
+            if added & {c.name for c in index.columns}:
+                index.create(conn, checkfirst=True)

@@ -49,3 +49,7 @@ class MotionRow(Base):
     parent_id: Mapped[str | None] = mapped_column(
         String(64), ForeignKey("motions.id", ondelete="SET NULL"), nullable=True, index=True)
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=_now, index=True)
+    # The browser that made it (the studio's random per-browser id, `X-Interplay-Client`), for
+    # its "My motions" list; None for motions made without one (CLI, API, older rows). Never
+    # sent back with a motion: it is what lists a browser's motions.
+    client_id: Mapped[str | None] = mapped_column(String(64), nullable=True, index=True)

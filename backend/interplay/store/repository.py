@@ -55,6 +55,7 @@ class MotionSummary:
     created_at: datetime
     metrics: dict | None = field(default=None)
     edit: dict | None = field(default=None)
+    first_frame: list[np.ndarray] | None = field(default=None)   # (22, 3) per person
 
 
 def _pack(people: list[np.ndarray]) -> tuple[bytes, int]:
@@ -76,6 +77,11 @@ def _unpack(blob: bytes, persons: int, frames: int) -> list[np.ndarray]:
     return [arr[i].copy() for i in range(persons)]
 
 
+def _first_frame(blob: bytes, persons: int, frames: int) -> list[np.ndarray]:
+    arr = np.frombuffer(blob, dtype=np.float32).reshape(persons, frames, NUM_JOINTS, 3)
+    return [arr[i, 0].copy() for i in range(persons)]
+
+
 def _aware(dt: datetime) -> datetime:
     # SQLite drops the zone; every timestamp here is written in UTC.
     return dt if dt.tzinfo else dt.replace(tzinfo=timezone.utc)
@@ -89,14 +95,17 @@ class MotionRepository:
                seed: int | None = None, plan: dict | None = None, metrics: dict | None = None,
                highlights: dict | None = None, parent_id: str | None = None,
                id: str | None = None, review: dict | None = None,
-               edit: dict | None = None) -> StoredMotion:
+               edit: dict | None = None, client_id: str | None = None) -> StoredMotion:
         """Store a motion and return it as read back. `id` may be pre-allocated (a job hands
-        out the motion id before generation ends); otherwise a fresh one is drawn."""
+        out the motion id before generation ends); otherwise a fresh one is drawn. `client_id`
+        is the browser that made it (its "My motions" list, `for_client`)."""
         blob, frames = _pack(people)
+        if client_id is not None and not valid_id(client_id):
+            raise ValueError(f"malformed client id {client_id!r}")
         row = MotionRow(id=id or new_id(), prompt=prompt, persons=len(people),
                         seconds=float(seconds), seed=seed, fps=FPS, frames=frames, joints=blob,
                         plan=plan, metrics=metrics, highlights=highlights, parent_id=parent_id,
-                        review=review, edit=edit)
+                        review=review, edit=edit, client_id=client_id)
         with Session(self.engine, expire_on_commit=False) as session:
             session.add(row)
             session.commit()
@@ -136,6 +145,25 @@ class MotionRepository:
                                            created_at=_aware(row.created_at), edit=row.edit))
                 current = row.parent_id
         return chain[::-1]
+
+    def for_client(self, client_id: str, limit: int = 20) -> list[MotionSummary]:
+        """The motions `client_id` made (generated, edited, re-run), newest first, at most
+        `limit`, each with its first frame (one (22, 3) array per person) for a thumbnail;
+        [] for a malformed id. There is no listing without a client id."""
+        if not valid_id(client_id):
+            return []
+        cols = (MotionRow.id, MotionRow.prompt, MotionRow.persons, MotionRow.seconds,
+                MotionRow.frames, MotionRow.parent_id, MotionRow.created_at, MotionRow.edit,
+                MotionRow.joints)
+        stmt = (select(MotionRow).options(load_only(*cols))
+                .where(MotionRow.client_id == client_id)
+                .order_by(MotionRow.created_at.desc(), MotionRow.id).limit(max(0, limit)))
+        with Session(self.engine) as session:
+            return [MotionSummary(id=r.id, prompt=r.prompt, persons=r.persons, seconds=r.seconds,
+                                  frames=r.frames, parent_id=r.parent_id,
+                                  created_at=_aware(r.created_at), edit=r.edit,
+                                  first_frame=_first_frame(r.joints, r.persons, r.frames))
+                    for r in session.scalars(stmt)]
 
     def list(self, limit: int = 50, offset: int = 0) -> list[MotionSummary]:
         """Newest first, without the joints."""

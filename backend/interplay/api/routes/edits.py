@@ -7,7 +7,7 @@ import logging
 
 from fastapi import APIRouter, HTTPException, Request
 
-from interplay.api.deps import RepoDep
+from interplay.api.deps import ClientDep, RepoDep
 from interplay.api.deps import generator as loaded_generator
 from interplay.api.schemas import ERRORS, EditCreate, MotionOut
 from interplay.generators.base import EditUnavailable
@@ -20,7 +20,8 @@ router = APIRouter(prefix="/api", tags=["motions"])
 
 @router.post("/motions/{motion_id}/edit", status_code=201, response_model=MotionOut,
              responses={**ERRORS, 503: ERRORS[404]})
-def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, request: Request) -> dict:
+def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, request: Request,
+                client: ClientDep) -> dict:
     """Edit `part` (left_arm, right_arm, left_leg, right_leg, whole_body or a model part) over
     `frames` [a, b) from `prompt`; everything else stays as it was. With `trajectory` the
     (edited) motion's person then follows the drawn path or preset (prompt optional)."""
@@ -32,7 +33,8 @@ def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, request: Reques
     generator = loaded_generator(request) if body.prompt is not None else None
     try:
         edited = edit_stored(repo, generator, parent, body.part, body.prompt, body.frames,
-                             body.seed, body.trajectory.plain() if body.trajectory else None)
+                             body.seed, body.trajectory.plain() if body.trajectory else None,
+                             client_id=client)
     except ValueError as exc:
         raise HTTPException(422, str(exc)) from None
     except EditUnavailable as exc:

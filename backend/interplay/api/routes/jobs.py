@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from fastapi import APIRouter, HTTPException, Request
 
-from interplay.api.deps import JobsDep, RepoDep
+from interplay.api.deps import ClientDep, JobsDep, RepoDep
 from interplay.api.deps import generator as loaded_generator
 from interplay.api.jobs import JobSpec
 from interplay.api.schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
@@ -20,11 +20,13 @@ def stream_path(job_id: str) -> str:
 
 @router.post("", status_code=201, response_model=JobCreated,
              responses={**ERRORS, 429: ERRORS[404], 503: ERRORS[404]})
-def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request) -> JobCreated:
+def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request,
+               client: ClientDep) -> JobCreated:
     """Start generating; follow the WebSocket at `stream` for plan, segment, frames,
     highlights, review, correction, metrics and done events. The motion is stored under
     `motion_id` when done. `trajectory` makes a person follow a drawn path or preset shape;
-    `mode: react` generates a reactor to the stored motion `actor_motion_id`."""
+    `mode: react` generates a reactor to the stored motion `actor_motion_id`. With the
+    `X-Interplay-Client` header the motion is listed in that browser's GET /api/motions."""
     if body.mode == "react":
         assert body.actor_motion_id is not None     # JobCreate: mode react needs one
         if not repo.exists(body.actor_motion_id):
@@ -35,7 +37,7 @@ def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request) 
     seed = body.seed if body.seed is not None else random_seed()
     spec = JobSpec(prompt=body.prompt, persons=body.persons, seconds=body.seconds, seed=seed,
                    trajectory=body.trajectory.plain() if body.trajectory else None,
-                   mode=body.mode, actor_motion_id=body.actor_motion_id)
+                   mode=body.mode, actor_motion_id=body.actor_motion_id, client_id=client)
     try:
         job = jobs.submit(spec, generator)
     except OverflowError as exc:

@@ -92,7 +92,8 @@ class GenerateRunner:
         try:
             self.repo.create(id=job.motion_id, prompt=spec.prompt, people=final,
                              seconds=spec.seconds, seed=spec.seed, plan=plain(out.plan.to_json()),
-                             metrics=metrics, highlights=highlights, review=plain(out.review))
+                             metrics=metrics, highlights=highlights, review=plain(out.review),
+                             client_id=spec.client_id)
         except Exception as exc:
             raise StageError("store", f"{type(exc).__name__}: {exc}") from exc
         job.push(DoneEvent(motion_id=job.motion_id, frames=w).dump())

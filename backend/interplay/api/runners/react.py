@@ -81,7 +81,8 @@ def react_job(job, repo, guidance: bool = True, chunk: int = CHUNK) -> None:
     try:
         repo.create(id=job.motion_id, prompt=parent.prompt, people=final,
                     seconds=total / FPS, seed=spec.seed, plan=plain(plan), metrics=metrics,
-                    highlights=highlights, parent_id=parent.id, edit=edit)
+                    highlights=highlights, parent_id=parent.id, edit=edit,
+                    client_id=spec.client_id)
     except Exception as exc:
         raise StageError("store", f"{type(exc).__name__}: {exc}") from exc
     job.push(DoneEvent(motion_id=job.motion_id, frames=total).dump())
