@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from interplay.planner.schema import TrajectorySpec
 from interplay.trajectory import curves as cv
 
 
@@ -195,11 +196,11 @@ def test_make_curve_takes_the_planners_trajectory_spec():
     assert np.allclose(cv.make_curve(turn)[-1], [-2.0, 2.0], atol=1e-9)
 
 
-def test_make_curve_accepts_a_pydantic_like_model():
-    class Spec:
-        def model_dump(self):
-            return {"shape": "polyline", "waypoints": [[1.0, 1.0]], "clockwise": None}
-    assert np.allclose(cv.make_curve(Spec())[-1], [1, 1])
+def test_make_curve_accepts_the_planners_model():
+    spec = TrajectorySpec(shape="polyline", waypoints=[(0.5, 0.5), (1.0, 1.0)])
+    assert np.allclose(cv.make_curve(spec)[-1], [1, 1])
+    with pytest.raises(ValueError, match="dict or a TrajectorySpec"):
+        cv.make_curve(["polyline"])
 
 
 @pytest.mark.parametrize("spec, message", [
