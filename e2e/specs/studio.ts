@@ -38,6 +38,8 @@ declare global {
       range: [number, number] | null;
       playing: boolean;
       agentReviews: number;
+      library: string[];
+      frameJoints(person: number, frame: number): number[][] | null;
       project(person: number, joint: number): [number, number] | null;
       groundAt(x: number, y: number): [number, number] | null;
       projectPoint(x: number, y: number, z: number): [number, number] | null;

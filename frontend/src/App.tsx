@@ -17,6 +17,7 @@ import { PartEditor } from "./ui/PartEditor";
 import { Versions } from "./ui/Versions";
 import { ThemeToggle } from "./ui/ThemeToggle";
 import { EmptyState } from "./ui/EmptyState";
+import { MyMotions } from "./ui/MyMotions";
 import { useKeyboard } from "./ui/keyboard";
 
 export function App() {
@@ -48,6 +49,7 @@ export function App() {
           <Legend />
         </div>
         <aside className="sidebar">
+          <MyMotions />
           <ReactorPanel />
           <PathPanel />
           <PlanPanel />

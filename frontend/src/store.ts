@@ -92,6 +92,11 @@ export interface StudioState {
   edit: EditInfo | null;
   versions: Versions;
   theme: Theme;
+  /** The request of the generation starting or running (its `intentKey`), so the same
+   * request is not sent twice; null when none. */
+  intent: { key: string; starting: boolean } | null;
+  /** What the edit being applied is, for the progress ("Applying the edit…" when null). */
+  editLabel: string | null;
   setTool(tool: Tool): void;
   setPath(path: Partial<PathState>): void;
   select(sel: { person: number; part: EditPart } | null): void;
@@ -133,6 +138,8 @@ export const useStudio = create<StudioState>()((set) => ({
   edit: null,
   versions: noVersions,
   theme: storedTheme(),
+  intent: null,
+  editLabel: null,
   setTool: (tool) => set((s) => ({ tool: s.tool === tool ? "view" : tool })),
   setPath: (path) => {
     pointer.version++;

@@ -1,18 +1,24 @@
 // The studio's actions: generate a motion (job + stream), open a stored one, start up.
 // They write per-frame data into `frames` and UI state into the store. Edits, undo/redo and
 // re-runs are in directing/actions.ts.
-import { ApiError, cancelJob, createJob, getHistory, getMotion, getSkeleton, motionIdFromPath } from "./api/client";
+import { ApiError, cancelJob, createJob, getHistory, getJob, getMotion, getSkeleton, motionIdFromPath } from "./api/client";
+import { intentKey, recalledRequest, rememberRequest, resumeFromSearch, resumeUrl } from "./api/intent";
+import { refreshLibrary, showLibrary, watchLibrary } from "./library";
 import { openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
 import { agentFromReview } from "./api/agent";
 import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
 import { reactRequest } from "./directing/react";
 import { fromHistory, moveTo, pushVersion } from "./directing/versions";
-import { FPS, frames, playhead, useStudio } from "./store";
+import { FPS, frames, playhead, useStudio, type StudioState } from "./store";
 
 let stream: StreamHandle | null = null;
 /** A react job keeps the actor on stage until its first frames arrive; then the buffer is
  * reset to this many people (so the stage never goes blank between the two). */
 let pendingPersons: number | null = null;
+/** A job reattached after a reload: its people are known from its first frames. */
+const FROM_FRAMES = -1;
+/** A Generate whose POST is in flight (a second one is ignored until it answers). */
+let starting = false;
 
 export function message(err: unknown): string {
   if (err instanceof ApiError || err instanceof Error) return err.message;
@@ -34,7 +40,9 @@ export function showInUrl(id: string, mode: "push" | "replace" = "push"): void {
 function handleEvent(ev: StreamEvent): void {
   try {
     if (ev.type === "frames" && pendingPersons !== null) {
-      frames.reset(pendingPersons);
+      const n = pendingPersons === FROM_FRAMES ? ev.people.length : pendingPersons;
+      frames.reset(n);
+      if (pendingPersons === FROM_FRAMES) useStudio.setState({ motionPersons: n });
       pendingPersons = null;
       playhead.pos = 0;
       useStudio.setState({ frame: 0, playing: true });
@@ -47,6 +55,8 @@ function handleEvent(ev: StreamEvent): void {
   }
   useStudio.setState((s) => ({ stream: reduceStream(s.stream, ev) }));
   const { mode, actorId, plan } = useStudio.getState().stream;
+  // a react job that did not finish goes back to its actor
+  if (ev.type === "done" || ev.type === "error") leaveJobUrl(ev.type === "done" ? ev.motion_id : mode === "react" ? (actorId ?? null) : null);
   if (mode === "react") {
     handleReactEnd(ev, actorId ?? null, (plan?.prompt as string | null | undefined) ?? null);
     return;
@@ -64,7 +74,45 @@ function handleEvent(ev: StreamEvent): void {
     stream = null;
     useStudio.setState({ motionId: ev.motion_id, versions: fromHistory([ev.motion_id], ev.motion_id) });
     showInUrl(ev.motion_id);
+    void refreshLibrary();
+    usePathUp();
   }
+}
+
+/** The drawn path the running job was sent with (it applies to that one Generate). */
+let sentPath: unknown = null;
+
+/** A generation that followed the drawn path is done: the path is used up (it applied to that
+ * Generate only), unless a new one was drawn meanwhile. A failed or cancelled one keeps it. */
+function usePathUp(): void {
+  const s = useStudio.getState();
+  if (sentPath !== null && s.path.points === sentPath) s.setPath({ points: [], preset: null });
+  sentPath = null;
+}
+
+/** The URL of the job being followed (`/?job=…`, kept across a reload) gives way to the stored
+ * motion's (`/m/{id}`, in its place) or, without one, to the plain studio. */
+function leaveJobUrl(motionId: string | null): void {
+  if (!resumeFromSearch(window.location.search)) return;
+  window.history.replaceState(motionId ? { motionId } : null, "", motionId ? `/m/${motionId}` : "/");
+}
+
+/** The request Generate sends from the form (and the drawn path), with `override`. */
+export function formRequest(override: Partial<JobRequest> = {}, s: StudioState = useStudio.getState()): JobRequest {
+  const { prompt, persons, seconds } = s;
+  const req: JobRequest = { prompt, persons, seconds, ...override };
+  const trajectory = override.trajectory ?? currentTrajectory(s);
+  if (trajectory) req.trajectory = trajectory;
+  return req;
+}
+
+/** Whether Generate would send one job too many: a Generate is being started, or a job for
+ * this very request is running (a double click, Enter again). A changed request may go. */
+export function generateBlocked(s: StudioState = useStudio.getState()): boolean {
+  if (s.intent?.starting) return true;
+  const running = s.stream.phase === "connecting" || s.stream.phase === "generating";
+  if (running && s.stream.mode === "react") return true; // the reactor panel owns that job
+  return running && s.intent !== null && s.intent.key === intentKey(formRequest({}, s));
 }
 
 /** The end of a react job: done → the stored pair is the next version after the actor (undo
@@ -82,6 +130,7 @@ function handleReactEnd(ev: StreamEvent, actorId: string | null, intent: string 
       versions: pushVersion(s.versions, ev.motion_id),
     }));
     showInUrl(ev.motion_id);
+    void refreshLibrary();
     return;
   }
   const error = ev.cancelled ? null : ev.message;
@@ -90,8 +139,8 @@ function handleReactEnd(ev: StreamEvent, actorId: string | null, intent: string 
 }
 
 /** The drawn (or preset) path to send with a job, when there is one. */
-export function currentTrajectory(): Trajectory | undefined {
-  const { path, persons } = useStudio.getState();
+export function currentTrajectory(s: StudioState = useStudio.getState()): Trajectory | undefined {
+  const { path, persons } = s;
   if (path.points.length < 2) return undefined;
   const person = (Math.min(path.person, persons - 1) as 0 | 1) ?? 0;
   return { person, points: path.points };
@@ -99,31 +148,110 @@ export function currentTrajectory(): Trajectory | undefined {
 
 /** Start a generation job (the form's prompt, or `override`) and stream its frames into the scene. */
 export async function generate(override: Partial<JobRequest> = {}): Promise<void> {
-  const { prompt, persons, seconds } = useStudio.getState();
+  // One job per intent: nothing while a Generate is starting, nothing for the request already
+  // running; a changed request replaces the running job (which is cancelled, not left to run).
+  const req = formRequest(override);
+  const key = intentKey(req);
+  const before = useStudio.getState();
+  const running = before.stream.phase === "connecting" || before.stream.phase === "generating";
+  if (starting || (running && (before.intent?.key === key || before.stream.mode === "react"))) return;
+  starting = true;
+  useStudio.setState({ intent: { key, starting: true } });
+  if (running && before.stream.jobId) void cancelJob(before.stream.jobId).catch(() => undefined);
   stream?.close();
   stream = null;
   pendingPersons = null;
   useStudio.setState({ error: null, selected: null, range: null, edit: null });
-  const req: JobRequest = { prompt, persons, seconds, ...override };
-  const trajectory = override.trajectory ?? currentTrajectory();
-  if (trajectory) req.trajectory = trajectory;
   let job;
   try {
     job = await createJob(req);
   } catch (err) {
+    useStudio.setState({ intent: null });
     fail(err);
     return;
+  } finally {
+    starting = false;
   }
+  sentPath = req.trajectory && !override.trajectory ? useStudio.getState().path.points : null;
+  window.history.pushState(null, "", resumeUrl(job.job_id, job.motion_id));
+  rememberRequest(job.job_id, req);
   frames.reset(req.persons);
   playhead.pos = 0;
   useStudio.setState({
-    stream: startStream(null, job.job_id),
+    stream: { ...startStream(null, job.job_id), path: Boolean(req.trajectory) },
+    intent: { key, starting: false },
     motionId: null,
     motionPersons: req.persons,
     frame: 0,
     playing: true,
   });
   stream = openStream(job.stream, handleEvent);
+}
+
+/** After a reload with `?job=…`: follow that job again (its stream replays every event from
+ * the start), or open its motion if it is done; if the server no longer knows it, say so and
+ * show My motions. */
+export async function resumeJob(jobId: string, motionId: string | null): Promise<void> {
+  let status;
+  try {
+    status = await getJob(jobId);
+  } catch (err) {
+    if (!(err instanceof ApiError) || err.status !== 404) {
+      fail(err);
+      return;
+    }
+    // gone (expired, or the server restarted): its motion may still be stored
+    if (motionId && (await getMotion(motionId).then(() => true, () => false))) {
+      window.history.replaceState({ motionId }, "", `/m/${motionId}`);
+      await openMotion(motionId);
+      return;
+    }
+    window.history.replaceState(null, "", "/");
+    showLibrary("The generation this page was following is no longer on the server (it expired or the server restarted). Your motions are below.");
+    return;
+  }
+  if (status.status === "done") {
+    window.history.replaceState({ motionId: status.motion_id }, "", `/m/${status.motion_id}`);
+    await openMotion(status.motion_id);
+    return;
+  }
+  if (status.status === "failed" || status.status === "cancelled") {
+    window.history.replaceState(null, "", "/");
+    showLibrary(`The generation this page was following ended without a motion${status.reason ? ` (${status.reason})` : ""}.`);
+    return;
+  }
+  stream?.close();
+  pendingPersons = FROM_FRAMES;
+  frames.reset(1);
+  playhead.pos = 0;
+  // this browser sent it: the form shows the request at once (else: from the plan, below)
+  const sent = recalledRequest(status.job_id);
+  if (sent) useStudio.setState({ prompt: sent.prompt, persons: sent.persons, seconds: sent.seconds });
+  useStudio.setState({
+    stream: { ...startStream(null, status.job_id), path: Boolean(sent?.trajectory) },
+    intent: sent ? { key: intentKey(sent), starting: false } : null,
+    motionId: null,
+    frame: 0,
+    playing: true,
+  });
+  stream = openStream(status.stream, (ev) => {
+    // the plan says what is being made: the form shows it (so Generate knows it is running)
+    if (ev.type === "plan" && ev.plan.mode !== "react") {
+      if (sent) return handleEvent(ev);
+      const p = ev.plan as { prompt?: string; persons?: number; seconds?: number };
+      const form = {
+        prompt: typeof p.prompt === "string" ? p.prompt : useStudio.getState().prompt,
+        persons: (p.persons === 2 ? 2 : 1) as 1 | 2,
+        seconds: typeof p.seconds === "number" ? p.seconds : useStudio.getState().seconds,
+      };
+      useStudio.setState({ ...form, motionPersons: form.persons });
+      useStudio.setState({ intent: { key: intentKey(formRequest()), starting: false } });
+    } else if (ev.type === "plan") {
+      const actor = (ev.plan.actor_motion_id as string | undefined) ?? null;
+      useStudio.setState((s) => ({ stream: { ...s.stream, mode: "react", actorId: actor } }));
+    }
+    handleEvent(ev);
+  });
 }
 
 /** Add a reactor (person B, generated frame by frame) to the current one-person motion, with an
@@ -143,6 +271,7 @@ export async function react(intent: string): Promise<void> {
     return;
   }
   pendingPersons = 2;
+  window.history.pushState(null, "", resumeUrl(job.job_id, job.motion_id));
   useStudio.setState({ stream: startStream(null, job.job_id, "react", motionId) });
   stream = openStream(job.stream, handleEvent);
 }
@@ -228,6 +357,12 @@ export async function startStudio(): Promise<void> {
     useStudio.setState({ skeleton: await getSkeleton() });
   } catch (err) {
     fail(err);
+    return;
+  }
+  watchLibrary();
+  const resume = resumeFromSearch(window.location.search);
+  if (resume) {
+    await resumeJob(resume.job, resume.motion);
     return;
   }
   const id = motionIdFromPath(window.location.pathname);

@@ -1,5 +1,6 @@
 // `window.__interplay`: a tiny read-only view of the studio for the end-to-end tests.
 import { FPS, frames, renderStats, sceneProbe, useStudio } from "./store";
+import { useLibrary } from "./library";
 
 export interface BvhSummary {
   bones: number;
@@ -33,6 +34,10 @@ export interface InterplayTestHook {
   readonly range: [number, number] | null;
   readonly playing: boolean;
   readonly agentReviews: number;
+  /** The motion ids listed in My motions, newest first. */
+  readonly library: string[];
+  /** Joints ([x, y, z] × 22) of person p at frame t of the buffer, or null. */
+  frameJoints(person: number, frame: number): number[][] | null;
   /** Screen position (client px) of joint j of person p at the frame shown, or null. */
   project(person: number, joint: number): [number, number] | null;
   /** Screen position (client px) of a world point, or null before the viewport exists. */
@@ -116,6 +121,16 @@ export function installTestHook(target: Window = window): void {
     },
     get agentReviews() {
       return Object.values(useStudio.getState().stream.agent).reduce((n, s) => n + s.reviews.length, 0);
+    },
+    get library() {
+      return useLibrary.getState().items.map((m) => m.id);
+    },
+    frameJoints(person, t) {
+      if (person >= frames.persons || t < 0 || t >= frames.received) return null;
+      const f = frames.frame(person, t);
+      const out: number[][] = [];
+      for (let j = 0; j < f.length / 3; j++) out.push([f[3 * j], f[3 * j + 1], f[3 * j + 2]]);
+      return out;
     },
     project(person, joint) {
       const t = useStudio.getState().frame;

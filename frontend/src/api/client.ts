@@ -1,6 +1,7 @@
 // Typed REST client for the studio API. Every non-2xx answer becomes an ApiError
 // carrying the server's readable `detail` message.
-import type { EditRequest, ExportFormat, JobCreated, JobRequest, Motion, ReactRequest, Skeleton, Version } from "./types";
+import type { EditRequest, ExportFormat, JobCreated, JobRequest, JobStatus, Motion, MotionListItem, ReactRequest, Skeleton, Version } from "./types";
+import { CLIENT_HEADER, clientId } from "./clientId";
 
 export class ApiError extends Error {
   constructor(
@@ -46,11 +47,38 @@ async function request<T>(path: string, init?: RequestInit): Promise<T> {
   return body as T;
 }
 
+/** Headers of a request that makes a motion: JSON, and this browser's id (its "My motions"). */
+function making(): Record<string, string> {
+  return { "Content-Type": "application/json", [CLIENT_HEADER]: clientId() };
+}
+
 export function createJob(req: JobRequest | ReactRequest): Promise<JobCreated> {
   return request<JobCreated>("/api/jobs", {
     method: "POST",
-    headers: { "Content-Type": "application/json" },
+    headers: making(),
     body: JSON.stringify(req),
+  });
+}
+
+/** A job's state (to reattach to it after a reload); 404 once it is unknown or expired. */
+export function getJob(jobId: string): Promise<JobStatus> {
+  return request<JobStatus>(`/api/jobs/${encodeURIComponent(jobId)}`);
+}
+
+/** The motions this browser made, newest first (at most `limit`, 1–50). */
+export async function listMotions(limit = 20): Promise<MotionListItem[]> {
+  const q = new URLSearchParams({ client: clientId(), limit: String(limit) });
+  const body = await request<{ motions: MotionListItem[] }>(`/api/motions?${q}`);
+  return body.motions;
+}
+
+/** Generate plan segment `index` of a stored motion again (a new seed), in place: the new
+ * version (201), the other segments' frames unchanged. */
+export function rerunSegment(id: string, index: number, seed?: number): Promise<Motion> {
+  return request<Motion>(`/api/motions/${encodeURIComponent(id)}/segments/${index}/rerun`, {
+    method: "POST",
+    headers: making(),
+    body: JSON.stringify(seed === undefined ? {} : { seed }),
   });
 }
 
@@ -62,7 +90,7 @@ export function getMotion(id: string): Promise<Motion> {
 export function editMotion(id: string, req: EditRequest): Promise<Motion> {
   return request<Motion>(`/api/motions/${encodeURIComponent(id)}/edit`, {
     method: "POST",
-    headers: { "Content-Type": "application/json" },
+    headers: making(),
     body: JSON.stringify(req),
   });
 }

@@ -25,6 +25,8 @@ export interface StreamState {
   mode?: StreamMode;
   /** react: the stored motion whose person 0 is the actor (the new version's parent). */
   actorId?: string | null;
+  /** The job was sent with a drawn path (its progress then names the path stage). */
+  path?: boolean;
 }
 
 export const initialStream: StreamState = {
@@ -79,8 +81,19 @@ export function reduceStream(state: StreamState, event: StreamEvent): StreamStat
         total: event.frames,
         received: Math.min(state.received, event.frames),
       };
-    case "error":
-      return { ...state, phase: "error", error: event.message || "generation failed", cancelled: Boolean(event.cancelled) };
+    case "error": {
+      // Cancelled: the job made nothing, so its plan and every badge go with it. Failed: the
+      // plan stays (what was tried), but no segment still says it is generating.
+      const cancelled = Boolean(event.cancelled);
+      return {
+        ...state,
+        phase: "error",
+        error: event.message || "generation failed",
+        cancelled,
+        plan: cancelled ? null : state.plan,
+        agent: cancelled ? initialAgent : stopped(state.agent),
+      };
+    }
     case "segment":
     case "review":
     case "correction":
@@ -88,6 +101,13 @@ export function reduceStream(state: StreamState, event: StreamEvent): StreamStat
     default:
       return state;
   }
+}
+
+/** The agent state with every segment still generating marked stopped. */
+function stopped(agent: AgentState): AgentState {
+  const out: AgentState = {};
+  for (const [k, v] of Object.entries(agent)) out[Number(k)] = v.status === "generating" ? { ...v, status: "stopped" } : v;
+  return out;
 }
 
 /** Parse one message; a malformed one becomes an error event rather than a throw. */

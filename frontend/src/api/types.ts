@@ -44,9 +44,37 @@ export interface EditInfo {
   prompt?: string | null;
   frames?: [number, number] | null;
   trajectory?: Trajectory | null;
-  /** "react" for a reactor added to the parent's person. */
+  /** "react" for a reactor added to the parent's person; "rerun" for a segment generated
+   * again in place (with `segment` and `seed`). */
   mode?: string | null;
+  segment?: number | null;
+  seed?: number | null;
 }
+
+/** One entry of "My motions" (GET /api/motions?client=…), newest first. */
+export interface MotionListItem {
+  id: string;
+  prompt: string;
+  persons: number;
+  seconds: number;
+  frames: number;
+  created_at: string | null;
+  parent_id: string | null;
+  edit: EditInfo | null;
+  /** The first frame per person: 22 × [x, y, z]. */
+  first_frame: Vec3[][];
+}
+
+/** GET /api/jobs/{id}. */
+export interface JobStatus {
+  job_id: string;
+  motion_id: string;
+  status: "queued" | "running" | "done" | "failed" | "cancelled";
+  events: number;
+  stream: string;
+  reason?: string | null;
+}
+
 
 export interface Version {
   id: string;

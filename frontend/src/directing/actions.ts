@@ -1,7 +1,8 @@
 // Directing actions: apply an edit (body part, frame range, drawn path) to the current motion
 // as a new version, move between versions (undo/redo), re-run a planned segment.
-import { editMotion, getMotion } from "../api/client";
-import type { EditRequest } from "../api/types";
+import { editMotion, getMotion, rerunSegment as rerunSegmentApi } from "../api/client";
+import type { EditRequest, Motion } from "../api/types";
+import { refreshLibrary } from "../library";
 import { fail, generate, openMotion, showInUrl, showMotion, currentTrajectory } from "../studio";
 import { useStudio } from "../store";
 import { canRedo, canUndo, current, pushVersion, redo as redoV, undo as undoV } from "./versions";
@@ -10,24 +11,31 @@ function randomSeed(): number {
   return Math.floor(Math.random() * 2 ** 31);
 }
 
-/** POST /edit on the current version; the answer becomes the next version and plays. */
-export async function applyEdit(req: EditRequest): Promise<boolean> {
+/** Make a new version of the current one (`make` answers it); it becomes the next version
+ * (undo returns to this one) and plays. `label` says what is being done meanwhile. */
+async function newVersion(make: (id: string) => Promise<Motion>, label: string | null = null): Promise<boolean> {
   const s = useStudio.getState();
   const id = current(s.versions) ?? s.motionId;
   if (!id || s.editing) return false;
-  useStudio.setState({ editing: true, error: null });
+  useStudio.setState({ editing: true, editLabel: label, error: null });
   try {
-    const motion = await editMotion(id, { seed: randomSeed(), ...req });
+    const motion = await make(id);
     showMotion(motion);
     useStudio.setState((st) => ({ versions: pushVersion(st.versions, motion.id) }));
     showInUrl(motion.id, "push");
+    void refreshLibrary();
     return true;
   } catch (err) {
     fail(err);
     return false;
   } finally {
-    useStudio.setState({ editing: false });
+    useStudio.setState({ editing: false, editLabel: null });
   }
+}
+
+/** POST /edit on the current version; the answer becomes the next version and plays. */
+export function applyEdit(req: EditRequest): Promise<boolean> {
+  return newVersion((id) => editMotion(id, { seed: randomSeed(), ...req }));
 }
 
 /** Edit the selected part (or the whole body) with an instruction, over the selected range. */
@@ -66,14 +74,21 @@ export async function redo(): Promise<void> {
   await goTo(current(redoV(v)));
 }
 
-/** Re-run plan segment i: a new job with its prompt and a new seed, or (`inbetween`) an
- * in-between edit of its frames of the current motion. */
+/** Re-run plan segment i of the current motion: (`job`) generated again with a new seed in
+ * place — the other segments' frames stay, a new version (undo returns to this one) — or
+ * (`inbetween`) an in-between edit of its frames. Without a stored motion (a failed job) the
+ * segment's prompt becomes a new job. */
 export async function rerunSegment(i: number, how: "job" | "inbetween"): Promise<void> {
-  const { stream, seconds, motionPersons } = useStudio.getState();
+  const { stream, seconds, motionPersons, motionId } = useStudio.getState();
   const seg = stream.plan?.segments[i];
   if (!seg) return;
   if (how === "inbetween") {
     await applyEdit({ part: "whole_body", prompt: seg.prompt, frames: [seg.start, seg.end] });
+    return;
+  }
+  if (motionId && stream.phase === "done") {
+    const n = stream.plan?.segments.length ?? 1;
+    await newVersion((id) => rerunSegmentApi(id, i, randomSeed()), `Re-running segment ${i + 1} of ${n} with a new seed…`);
     return;
   }
   const persons = (motionPersons === 2 ? 2 : 1) as 1 | 2;

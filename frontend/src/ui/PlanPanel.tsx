@@ -7,6 +7,7 @@ import { SegmentCard } from "./SegmentCard";
 /** "left_arm: wave · frames 10–51" or "path (person A)". */
 export function describeEdit(e: EditInfo): string {
   if (e.mode === "react") return describeReaction(e.prompt);
+  if (e.mode === "rerun") return `segment ${(e.segment ?? 0) + 1} generated again with a new seed${e.prompt ? ` (“${e.prompt}”)` : ""}`;
   const parts = [
     e.prompt ? `${e.part ?? "whole_body"}: ${e.prompt}` : null,
     e.frames ? `frames ${e.frames[0]}–${e.frames[1]}` : null,

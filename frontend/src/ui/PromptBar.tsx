@@ -1,6 +1,6 @@
 import type { FormEvent } from "react";
 import { useShallow } from "zustand/react/shallow";
-import { generate } from "../studio";
+import { generate, generateBlocked } from "../studio";
 import { useStudio, type Persons } from "../store";
 
 const EXAMPLES = ["a person walks forward", "two people dance salsa", "a person jumps twice"];
@@ -19,10 +19,13 @@ export function PromptBar() {
   );
   const phase = useStudio((s) => s.stream.phase);
   const busy = phase === "connecting" || phase === "generating";
+  // one job per intent: disabled while this very request starts or runs; a changed one may go
+  // (it replaces the running job)
+  const blocked = useStudio(generateBlocked);
 
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    if (!busy) void generate();
+    if (!blocked) void generate();
   };
 
   return (
@@ -64,8 +67,14 @@ export function PromptBar() {
         />
         <span>s</span>
       </label>
-      <button className="primary" type="submit" data-testid="generate" disabled={busy}>
-        {busy ? "Generating…" : "Generate"}
+      <button
+        className="primary"
+        type="submit"
+        data-testid="generate"
+        disabled={blocked}
+        title={busy && !blocked ? "Generate this instead (the running generation is cancelled)" : undefined}
+      >
+        {blocked ? "Generating…" : "Generate"}
       </button>
     </form>
   );
