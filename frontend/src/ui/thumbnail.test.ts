@@ -39,6 +39,20 @@ describe("thumbnail", () => {
     const front = width([rest]);
     for (const yaw of [Math.PI / 2, Math.PI, -2.2]) expect(width([posed(yaw, 3, -4)])).toBeCloseTo(front, 6);
   });
+  it("shows two people side by side, whichever way the pair stands", () => {
+    for (const yaw of [0, Math.PI / 2, 2.5]) {
+      // facing each other 1.2 m apart along the pair's own axis, turned by yaw
+      const c = Math.cos(yaw), s = Math.sin(yaw);
+      const a = posed(yaw, 0, 0);
+      const b = posed(yaw + Math.PI, 1.2 * s, 1.2 * c);
+      const t = thumbnail([a, b], parents);
+      const mid = (p: number) => {
+        const xs = t.lines.filter((l) => l.person === p).flatMap((l) => [l.x1, l.x2]);
+        return (Math.min(...xs) + Math.max(...xs)) / 2;
+      };
+      expect(mid(1) - mid(0)).toBeCloseTo(1.2, 1);
+    }
+  });
   it("copes with no people", () => {
     expect(thumbnail([], parents)).toEqual({ lines: [], viewBox: "-1 -2 2 2" });
   });

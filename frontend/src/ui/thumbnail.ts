@@ -1,5 +1,5 @@
-// A first-frame pose as 2-D line segments for a small SVG: the skeleton seen from the front of
-// person 1 (turned about the vertical so that they face the viewer), feet at the bottom.
+// A first-frame pose as 2-D line segments for a small SVG, feet at the bottom: one person seen
+// from the front (turned about the vertical to face the viewer), two people side by side.
 import type { Vec3 } from "../api/types";
 
 export interface ThumbLine {
@@ -30,10 +30,22 @@ function facingYaw(p: Vec3[]): number {
   return Math.atan2(fx, fz);
 }
 
+/** The (cos, sin) of the turn about the vertical the thumbnail is seen after: two people apart
+ * side by side (the line between their pelvises across the picture, person 1 on the left),
+ * else person 1 facing the viewer. */
+function viewTurn(people: Vec3[][]): [number, number] {
+  if (people.length > 1 && people[0].length && people[1].length) {
+    const dx = people[1][0][0] - people[0][0][0], dz = people[1][0][2] - people[0][0][2];
+    const d = Math.hypot(dx, dz);
+    if (d > 0.25) return [dx / d, dz / d];
+  }
+  const yaw = people.length ? facingYaw(people[0]) : 0;
+  return [Math.cos(-yaw), Math.sin(-yaw)];
+}
+
 /** Bones (child → parent) of every person, projected, fitted into a square with a margin. */
 export function thumbnail(people: Vec3[][], parents: number[]): Thumb {
-  const yaw = people.length ? facingYaw(people[0]) : 0;
-  const c = Math.cos(-yaw), s = Math.sin(-yaw);
+  const [c, s] = viewTurn(people);
   const pts = people.map((p) => p.map(([x, y, z]) => [c * x + s * z, -y] as [number, number]));
   const lines: ThumbLine[] = [];
   pts.forEach((p, person) => {
