@@ -1,4 +1,5 @@
-"""`interplay eval`, `eval-react` and `review-eval`: the measurement commands (the reports live in `interplay.eval`)."""
+"""`interplay eval`, `eval-react`, `review-eval` and `eval-prompts`: the measurement commands (the
+reports live in `interplay.eval`)."""
 
 from __future__ import annotations
 
@@ -85,6 +86,38 @@ def cmd_review_eval(args) -> int:
     return 0
 
 
+def cmd_eval_prompts(args) -> int:
+    """Every generator row on the prompt suite's split, judged by the checks on the motion."""
+    import time
+    from pathlib import Path
+
+    from interplay.eval.prompts.report import build_report, format_table, run, write
+    from interplay.eval.prompts.rows import ROW_NAMES as PROMPT_ROWS
+    from interplay.eval.prompts.rows import load_rows
+    from interplay.eval.prompts.suite import load_suite, select
+    from interplay.settings import get_settings
+    names = [r.strip() for r in args.rows.split(",") if r.strip()] if args.rows else list(PROMPT_ROWS)
+    if args.seeds < 1:
+        raise CliError("--seeds must be at least 1")
+    try:
+        prompts = select(load_suite(), args.split,
+                         ids=[i.strip() for i in args.ids.split(",")] if args.ids else None)
+        if not prompts:
+            raise ValueError(f"no prompts in split {args.split!r}" + (f" with ids {args.ids}" if args.ids else ""))
+        rows, skipped = load_rows(names, get_settings())
+    except (ValueError, FileNotFoundError) as exc:
+        raise CliError(str(exc)) from None
+    out = Path(args.out or f"var/eval-prompts/{args.split}")
+    t0 = time.monotonic()
+    results = run(rows, prompts, seeds=args.seeds, out=out, log=lambda m: print(m, file=sys.stderr))
+    report = build_report(rows, skipped, prompts, results, args.split, args.seeds,
+                          time.monotonic() - t0)
+    write(out, report, results)
+    print(json.dumps(report, indent=1) if args.json else format_table(report))
+    print(f"per-prompt results and motions: {out}/", file=sys.stderr)
+    return 0
+
+
 def register(sub) -> None:
     p = sub.add_parser("eval", help="text-to-motion metrics (R-precision, FID, …) of every "
                        "generator on the test split, with 95%% confidence intervals")
@@ -118,3 +151,17 @@ def register(sub) -> None:
     p.add_argument("--seconds", type=float, default=8.0, help="length per prompt (default 8)")
     p.add_argument("--rounds", type=int, default=2, help="K review rounds (default 2)")
     p.set_defaults(func=cmd_review_eval)
+
+    p = sub.add_parser("eval-prompts", help="pass rates of every generator on a suite of prompts "
+                       "as users type them, checked on the motion itself (per category, 95%% CI "
+                       "over seeds)")
+    p.add_argument("--split", choices=("dev", "test"), default="test",
+                   help="dev: tune there; test: the benchmark (default)")
+    p.add_argument("--rows", help="comma-separated: retrieval,spam,coda,default (default all; "
+                   "rows whose weights are missing are skipped)")
+    p.add_argument("--seeds", type=int, default=3, help="seeds per prompt (default 3)")
+    p.add_argument("--ids", help="comma-separated prompt ids (default every prompt of the split)")
+    p.add_argument("--json", action="store_true", help="the report as JSON")
+    p.add_argument("--out", help="where per-prompt results and motions go "
+                   "(default var/eval-prompts/SPLIT)")
+    p.set_defaults(func=cmd_eval_prompts)

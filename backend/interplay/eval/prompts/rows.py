@@ -1,0 +1,85 @@
+"""The generator rows `interplay eval-prompts` compares, each turning a prompt and a seed into
+people (one (T, 22, 3) array each) and the plan it made:
+
+  retrieval  the retrieval generator alone (one and two people), plan → every frame
+  spam       SPAM alone (one person only), plan → every frame
+  coda       CODA alone (two people only), plan → every frame
+  default    the product: the router (SPAM for one person, CODA for two, retrieval where their
+             weights are missing) through the studio's whole pipeline, `orchestrate` with the
+             evaluator the server loads: plan → generate → review rounds → trajectories
+
+Rows are built from the generator the settings name (`load_generator`); a row whose model
+did not load is skipped with the router's reason.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from interplay.generators.base import Request, generate_motion
+from interplay.generators.coda.generator import CodaGenerator
+from interplay.generators.router import Router, load_generator
+from interplay.generators.spam.generator import SpamGenerator
+from interplay.pipeline.orchestrator import default_evaluator, orchestrate
+from interplay.settings import Settings
+
+ROW_NAMES = ("retrieval", "spam", "coda", "default")
+Make = Callable[[Request], tuple[list[np.ndarray], dict]]
+
+
+@dataclass(frozen=True)
+class Row:
+    name: str
+    persons: tuple[int, ...]        # the prompts it can serve
+    make: Make
+    about: str
+
+
+def _plain(gen) -> Make:
+    def make(req: Request) -> tuple[list[np.ndarray], dict]:
+        m = generate_motion(gen, req)
+        return m.people, m.plan
+    return make
+
+
+def _pipeline(router: Router) -> Make:
+    evaluator = default_evaluator()
+
+    def make(req: Request) -> tuple[list[np.ndarray], dict]:
+        out = orchestrate(router, req, lambda e: None, lambda s, c: None, evaluator=evaluator)
+        return [np.asarray(p) for p in out.people], out.plan.to_json()
+    return make
+
+
+def load_rows(names=ROW_NAMES, settings: Settings | None = None
+              ) -> tuple[list[Row], dict[str, str]]:
+    """(the rows that load, {row: why skipped})."""
+    unknown = [n for n in names if n not in ROW_NAMES]
+    if unknown:
+        raise ValueError(f"unknown row(s) {unknown}; expected some of {', '.join(ROW_NAMES)}")
+    router = load_generator(settings)
+    rows, skipped = [], {}
+    for name in names:
+        if name == "retrieval":
+            rows.append(Row(name, (1, 2), _plain(Router(router.index)),
+                            "retrieval alone over the processed captures"))
+        elif name == "spam":
+            if router.spam is None:
+                skipped[name] = router.reason or "SPAM is not loaded"
+                continue
+            rows.append(Row(name, (1,), _plain(SpamGenerator(router.spam)), "SPAM alone"))
+        elif name == "coda":
+            if router.coda is None:
+                skipped[name] = router.coda_reason or "CODA is not loaded"
+                continue
+            rows.append(Row(name, (2,), _plain(CodaGenerator(router.coda)), "CODA alone"))
+        else:
+            served = ", ".join(f"{n} person{'s' if n > 1 else ''}: {g}" for n, g in (
+                (1, "spam" if router.spam is not None else "retrieval"),
+                (2, "coda" if router.coda is not None else "retrieval")))
+            rows.append(Row(name, (1, 2), _pipeline(router),
+                            f"the router through plan → generate → review → trajectory ({served})"))
+    return rows, skipped

@@ -1,0 +1,99 @@
+"""The prompt suite of `interplay eval-prompts` (`eval/data/prompts.json`), loaded and checked.
+
+Each prompt: id, split ("dev" to tune on, "test" to report), category, prompt (as a user types
+it), persons, seconds, start (the posture of its first frame: "standing", "lying", "sitting",
+… or "any"), contact (whether the two people are asked to touch) and checks, each
+`{"check": name, …parameters}` naming a check of `interplay.motion.checks.named.CHECKS`.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from interplay.motion.checks.named import CHECKS
+
+SUITE = Path(__file__).resolve().parents[1] / "data" / "prompts.json"
+SPLITS = ("dev", "test")
+# Table order; the names as the table prints them.
+CATEGORIES: dict[str, str] = {
+    "single": "single actions",
+    "counts": "counts",
+    "sequences": "sequences",
+    "directions_speeds": "directions & speeds",
+    "styles": "styles",
+    "part_locomotion": "part actions + locomotion",
+    "poses_held": "poses held",
+    "down_up": "getting down & up",
+    "sports_fighting": "sports & fighting",
+    "paths": "named paths",
+    "two_person": "two-person interactions",
+}
+STARTS = ("standing", "any", "low", "lying", "sitting", "kneeling", "all_fours")
+
+
+@dataclass(frozen=True)
+class Prompt:
+    id: str
+    split: str
+    category: str
+    prompt: str
+    persons: int
+    seconds: float
+    checks: tuple[dict, ...]
+    start: str = "standing"
+    contact: bool = False
+    kind: str = ""               # two-person prompts: greeting, contact, pushing, following, …
+    extra: dict = field(default_factory=dict)
+
+
+def _prompt(d: dict) -> Prompt:
+    where = f"prompt {d.get('id', '?')!r}"
+    for key in ("id", "split", "category", "prompt", "persons", "seconds", "checks"):
+        if key not in d:
+            raise ValueError(f"{where}: missing {key!r}")
+    if d["split"] not in SPLITS:
+        raise ValueError(f"{where}: split must be one of {SPLITS}, got {d['split']!r}")
+    if d["category"] not in CATEGORIES:
+        raise ValueError(f"{where}: unknown category {d['category']!r}")
+    if d["persons"] not in (1, 2):
+        raise ValueError(f"{where}: persons must be 1 or 2")
+    if not 0 < float(d["seconds"]) <= 60:
+        raise ValueError(f"{where}: seconds must be in (0, 60]")
+    start = d.get("start", "standing")
+    if start not in STARTS:
+        raise ValueError(f"{where}: start must be one of {STARTS}, got {start!r}")
+    checks = d["checks"]
+    if not isinstance(checks, list) or not checks:
+        raise ValueError(f"{where}: needs at least one check")
+    for c in checks:
+        name = c.get("check") if isinstance(c, dict) else None
+        if name not in CHECKS:
+            raise ValueError(f"{where}: unknown check {name!r}")
+        if CHECKS[name].persons == 2 and d["persons"] != 2:
+            raise ValueError(f"{where}: {name} needs two people")
+    known = {"id", "split", "category", "prompt", "persons", "seconds", "checks", "start",
+             "contact", "kind"}
+    return Prompt(id=d["id"], split=d["split"], category=d["category"], prompt=d["prompt"],
+                  persons=int(d["persons"]), seconds=float(d["seconds"]),
+                  checks=tuple(dict(c) for c in checks), start=start,
+                  contact=bool(d.get("contact", False)), kind=d.get("kind", ""),
+                  extra={k: v for k, v in d.items() if k not in known})
+
+
+def load_suite(path: Path = SUITE) -> list[Prompt]:
+    """Every prompt of the suite, validated (unique ids, known splits, categories and checks)."""
+    prompts = [_prompt(d) for d in json.loads(Path(path).read_text())["prompts"]]
+    ids = [p.id for p in prompts]
+    dup = sorted({i for i in ids if ids.count(i) > 1})
+    if dup:
+        raise ValueError(f"duplicate prompt ids: {dup}")
+    return prompts
+
+
+def select(prompts: list[Prompt], split: str | None = None, categories=None,
+           ids=None) -> list[Prompt]:
+    """The prompts of one split (None: both), optionally only some categories or ids."""
+    return [p for p in prompts if (split is None or p.split == split)
+            and (not categories or p.category in categories) and (not ids or p.id in ids)]

@@ -1,0 +1,6 @@
+"""Checks of what a motion does, computed from the joints alone (never from a plan):
+`measures` holds the per-frame quantities and events they are built on (flights, pelvis dips,
+travel relative to facing, hand points, ground clearance …), `named` the named pass/fail
+checks, the plausibility checks every output gets, and the registry (`CHECKS`) a prompt suite
+names them by. numpy only; `interplay eval-prompts` runs them on every generator's output.
+"""
