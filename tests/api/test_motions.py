@@ -64,7 +64,8 @@ def test_bvh_export_is_one_person_per_file(client, two_person, person):
     r = client.get(f"/api/motions/{two_person}/export", params={"format": "bvh",
                                                                      "person": person})
     assert r.status_code == 200, r.text
-    assert f"person{person}.bvh" in r.headers["content-disposition"]
+    # named as the studio names people: person=0 is "Person 1", the file "…-person1.bvh"
+    assert f"-person{person + 1}.bvh" in r.headers["content-disposition"]
     assert r.text.startswith("HIERARCHY")
     from interplay.motion.formats.bvh import read_bvh
     bvh = read_bvh(r.text)
@@ -154,7 +155,29 @@ def test_pages_serve_the_built_front_end(client, settings, two_person):
     for url in ("/assets/missing.js", "/assets/..%2Findex.html",
                 "/assets/%2E%2E/%2E%2E/var/secret.txt", "/nothing-here"):
         r = client.get(url)
-        assert r.status_code == 404 and r.json()["detail"], url
+        assert r.status_code == 404 and r.headers["content-type"].startswith("text/html"), url
+        assert "This page does not exist" in r.text, url      # never the file itself
+
+
+@pytest.mark.parametrize("url", ["/m/", "/nothing-here", "/m/abc/def", "/some/deep/path",
+                                 "/apidocs", "/%3Cscript%3Ealert(1)%3C/script%3E"])
+def test_unknown_pages_get_an_html_404_page(fake_client, url):
+    r = fake_client.get(url)
+    assert r.status_code == 404, url
+    assert r.headers["content-type"].startswith("text/html"), (url, r.headers)
+    assert "This page does not exist" in r.text and 'href="/"' in r.text
+    assert "<script>" not in r.text           # the path is shown escaped
+    css = fake_client.get("/not-found.css")      # its style: a file (no inline styles under the CSP)
+    assert css.status_code == 200 and css.headers["content-type"].startswith("text/css")
+
+
+@pytest.mark.parametrize("url", ["/api/nothing", "/api/motions/AAAAAAAAAAAAAAAAAAAAAA",
+                                 "/api/jobs/AAAAAAAAAAAAAAAAAAAAAA", "/api"])
+def test_api_paths_keep_json_404s(fake_client, url):
+    r = fake_client.get(url)
+    assert r.status_code == 404, url
+    assert r.headers["content-type"].startswith("application/json"), url
+    assert r.json()["detail"]
 
 
 def test_a_motion_reopens_identically_after_a_restart(settings, real_generator):

@@ -65,7 +65,9 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
         return JSONResponse({"detail": readable_errors(exc.errors())}, status_code=422)
 
     @app.exception_handler(StarletteHTTPException)
-    async def _http(_req: Request, exc: StarletteHTTPException):
+    async def _http(req: Request, exc: StarletteHTTPException):
+        if exc.status_code == 404 and pages.wants_page(req.url.path):
+            return pages.not_found_page(req.url.path)     # a person's bad link: a page, not JSON
         detail = exc.detail if isinstance(exc.detail, str) else str(exc.detail)
         if exc.status_code == 404 and detail == "Not Found":
             detail = "not found"

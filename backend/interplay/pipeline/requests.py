@@ -66,7 +66,10 @@ class TrajectoryIn(BaseModel):
 class GenerationRequest(BaseModel):
     """The fields every generation takes."""
 
-    prompt: str | None = Field(default=None, description=f"What the people do, 1–{MAX_PROMPT} "
+    # maxLength in the schema (not a pydantic constraint: the limit applies after spaces are
+    # collapsed, below) lets the studio page read the limit instead of repeating it
+    prompt: str | None = Field(default=None, json_schema_extra={"maxLength": MAX_PROMPT},
+                               description=f"What the people do, 1–{MAX_PROMPT} "
                                "characters (required to generate; in react mode the optional "
                                "intent, e.g. \"shake hands\": without one the reactor "
                                "follows the actor unprompted).")

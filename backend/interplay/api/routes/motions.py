@@ -90,7 +90,8 @@ def export_motion(motion_id: str, repo: RepoDep,
     text = write_bvh(people[person], fps=motion.fps, out_fps=int(fps), units=units, up=up, names=names,
                      floor=floor_height(people))
     return Response(text, media_type="text/plain; charset=utf-8", headers={
-        "Content-Disposition": f'attachment; filename="interplay-{motion.id}-person{person}.bvh"'})
+        # the file names people as the studio does: person=0 is Person 1, "…-person1.bvh"
+        "Content-Disposition": f'attachment; filename="interplay-{motion.id}-person{person + 1}.bvh"'})
 
 
 @router.get("/skeleton", response_model=SkeletonOut)
