@@ -10,7 +10,6 @@ import { Progress } from "./ui/Progress";
 import { PromptBar } from "./ui/PromptBar";
 import { ShareExport } from "./ui/ShareExport";
 import { Timeline } from "./ui/Timeline";
-import { TimelineTrack } from "./ui/TimelineTrack";
 import { Tools } from "./ui/Tools";
 import { PathPanel } from "./ui/PathPanel";
 import { PartEditor } from "./ui/PartEditor";
@@ -19,23 +18,29 @@ import { ThemeToggle } from "./ui/ThemeToggle";
 import { EmptyState } from "./ui/EmptyState";
 import { MyMotions } from "./ui/MyMotions";
 import { useKeyboard } from "./ui/keyboard";
+import { ShortcutButton, ShortcutSheet } from "./ui/ShortcutSheet";
+import { fetchLimits } from "./api/limits";
+import { useStudio } from "./store";
 
 export function App() {
   useEffect(() => {
     void startStudio();
+    // the request limits (prompt length, seconds, seed) from the API's schema
+    void fetchLimits().then((limits) => useStudio.setState({ limits }));
   }, []);
   useKeyboard();
 
   return (
     <div className="app">
       <header className="app__header">
-        <h1 className="brand">
+        <h1 className="brand" data-testid="brand">
           Interplay <span className="muted">studio</span>
         </h1>
         <PromptBar />
         <div className="header-tools">
           <Versions />
           <ThemeToggle />
+          <ShortcutButton />
         </div>
       </header>
       <ErrorBanner />
@@ -56,9 +61,9 @@ export function App() {
           <MetricsPanel />
           <ShareExport />
         </aside>
-        <TimelineTrack />
         <Timeline />
       </main>
+      <ShortcutSheet />
     </div>
   );
 }

@@ -3,6 +3,7 @@ import { createRoot } from "react-dom/client";
 import { App } from "./App";
 import { installTestHook } from "./testHook";
 import "./styles.css";
+import "./ui/panels.css";
 
 installTestHook();
 createRoot(document.getElementById("root")!).render(

@@ -7,6 +7,7 @@ import { FrameBuffer } from "./playback/frameBuffer";
 import type { EditInfo, EditPart } from "./api/types";
 import type { Point, Preset } from "./directing/path";
 import { noVersions, type Versions } from "./directing/versions";
+import { DEFAULT_LIMITS, type Limits } from "./api/limits";
 
 export const FPS = 20;
 
@@ -92,16 +93,27 @@ export interface StudioState {
   edit: EditInfo | null;
   versions: Versions;
   theme: Theme;
+  /** The shortcut sheet (`?`) is open. */
+  shortcuts: boolean;
+  /** Drawing a path looks straight down on the floor (on by default; a toggle in the toolbar). */
+  topView: boolean;
   /** The request of the generation starting or running (its `intentKey`), so the same
    * request is not sent twice; null when none. */
   intent: { key: string; starting: boolean } | null;
   /** What the edit being applied is, for the progress ("Applying the edit…" when null). */
   editLabel: string | null;
+  /** The seed the next Generate sends, or null for a random one. */
+  seed: number | null;
+  /** The request limits, read from the API's schema (/openapi.json) at start-up. */
+  limits: Limits;
   setTool(tool: Tool): void;
   setPath(path: Partial<PathState>): void;
   select(sel: { person: number; part: EditPart } | null): void;
   setRange(range: [number, number] | null): void;
   setTheme(theme: Theme): void;
+  setShortcuts(open: boolean): void;
+  setTopView(on: boolean): void;
+  setSeed(seed: number | null): void;
 }
 
 export const useStudio = create<StudioState>()((set) => ({
@@ -138,8 +150,12 @@ export const useStudio = create<StudioState>()((set) => ({
   edit: null,
   versions: noVersions,
   theme: storedTheme(),
+  shortcuts: false,
+  topView: true,
   intent: null,
   editLabel: null,
+  seed: null,
+  limits: DEFAULT_LIMITS,
   setTool: (tool) => set((s) => ({ tool: s.tool === tool ? "view" : tool })),
   setPath: (path) => {
     pointer.version++;
@@ -155,4 +171,7 @@ export const useStudio = create<StudioState>()((set) => ({
     }
     set({ theme });
   },
+  setShortcuts: (shortcuts) => set({ shortcuts }),
+  setTopView: (topView) => set({ topView }),
+  setSeed: (seed) => set({ seed }),
 }));

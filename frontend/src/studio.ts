@@ -100,7 +100,8 @@ function leaveJobUrl(motionId: string | null): void {
 /** The request Generate sends from the form (and the drawn path), with `override`. */
 export function formRequest(override: Partial<JobRequest> = {}, s: StudioState = useStudio.getState()): JobRequest {
   const { prompt, persons, seconds } = s;
-  const req: JobRequest = { prompt, persons, seconds, ...override };
+  // the seed field's seed (none: the server picks one); an override's seed wins
+  const req: JobRequest = { prompt, persons, seconds, ...(s.seed !== null ? { seed: s.seed } : {}), ...override };
   const trajectory = override.trajectory ?? currentTrajectory(s);
   if (trajectory) req.trajectory = trajectory;
   return req;
@@ -254,7 +255,7 @@ export async function resumeJob(jobId: string, motionId: string | null): Promise
   });
 }
 
-/** Add a reactor (person B, generated frame by frame) to the current one-person motion, with an
+/** Add a reactor (Person 2, generated frame by frame) to the current one-person motion, with an
  * optional intent. The actor stays on stage until the pair's first frames arrive; the pair
  * then grows as it streams, and ends as a new version whose parent is the actor. */
 export async function react(intent: string): Promise<void> {
@@ -310,7 +311,7 @@ export function showMotion(motion: Motion): void {
     motionPersons: motion.people.length,
     prompt: motion.prompt,
     persons: motion.people.length === 2 ? 2 : 1,
-    seconds: Math.max(1, Math.min(20, Math.round(n / FPS))),
+    seconds: ((l) => Math.max(l.secondsMin, Math.min(l.secondsMax, Math.round(n / FPS))))(useStudio.getState().limits),
     frame: 0,
     playing: true,
     edit: motion.edit ?? null,

@@ -1,5 +1,14 @@
 import { describe, expect, it } from "vitest";
-import { agentFromReview, describeInstruction, initialAgent, reduceAgent } from "./agent";
+import {
+  agentFromReview,
+  describeInstruction,
+  initialAgent,
+  instructionOutcomes,
+  plainReason,
+  reduceAgent,
+  segmentVerdict,
+  type SegmentProgress,
+} from "./agent";
 import { reduceStream, startStream } from "./stream";
 import type { StreamEvent } from "./types";
 
@@ -79,11 +88,12 @@ describe("reduceAgent", () => {
     expect(s).toMatchObject({ phase: "error", cancelled: true, jobId: "job" });
   });
 
-  it("describes instructions", () => {
+  it("describes instructions in words", () => {
     expect(describeInstruction({ kind: "edit_part", part: "left_arm", prompt: "wave", frames: [10, 30] })).toBe(
-      "edit left_arm: wave (frames 10–30)",
+      "left arm: “wave” (frames 10–30)",
     );
-    expect(describeInstruction({ kind: "regenerate" })).toBe("regenerate");
+    expect(describeInstruction({ kind: "inbetween", frames: [51, 60] })).toBe("redraw frames 51–60");
+    expect(describeInstruction({ kind: "regenerate" })).toBe("re-generate with a new seed");
   });
 });
 
@@ -103,5 +113,81 @@ describe("agentFromReview", () => {
     expect(a[0].status).toBe("done");
     expect(a[0].reviews[0]).toMatchObject({ round: 0, score: 0.85, verdict: "ok", captions: { body: "walks" } });
     expect(agentFromReview(null)).toEqual({});
+  });
+});
+
+// The reviewer's real wording (review/reviewer.py, review/checks.py).
+const EDIT = {
+  kind: "edit_part",
+  part: "right_arm",
+  prompt: "waves the right hand",
+  reason: "the plan says 'waves the right hand', the caption says 'the right arm is raised above the head'",
+};
+const SKATE = { kind: "inbetween", frames: [51, 60] as [number, number], prompt: "a person walks", reason: "foot skating in frames 51–60" };
+const TOUCH = { kind: "regenerate", prompt: "two people shake hands", reason: "'shake hands' needs a touch, but the hands never reach the other person" };
+const round = (r: number, verdict: string, instructions: object[]) => ({ round: r, captions: {}, score: 0.2, verdict, instructions }) as SegmentProgress["reviews"][number];
+const seg = (reviews: SegmentProgress["reviews"], corrections: SegmentProgress["corrections"] = [], status = "done"): SegmentProgress => ({ status, reviews, corrections });
+
+describe("verdicts and outcomes in words", () => {
+  it("says passed, corrected (with what was fixed) or failed (with why), never the raw 'correct'", () => {
+    expect(segmentVerdict(seg([round(0, "ok", [])]), true)).toEqual({ kind: "passed", text: "passed" });
+    const corrected = seg(
+      [round(0, "correct", [SKATE]), round(1, "ok", [])],
+      [{ round: 1, instruction: SKATE, accepted: true, scoreBefore: 0.12, scoreAfter: 0.16 }],
+    );
+    expect(segmentVerdict(corrected, true)).toEqual({ kind: "corrected", text: "corrected: frames 51–60 redrawn (foot skating)" });
+    const failed = segmentVerdict(seg([round(0, "correct", [TOUCH])], [
+      { round: 1, instruction: TOUCH, accepted: false, scoreBefore: 0.4, scoreAfter: 0.3, reason: "the score dropped" },
+    ]), true);
+    expect(failed.kind).toBe("failed");
+    expect(failed.text).toBe("failed: hands never meet (“shake hands” needs a touch)");
+    const partly = segmentVerdict(seg([round(0, "correct", [EDIT]), round(1, "correct", [EDIT])], [
+      { round: 1, instruction: EDIT, accepted: true, scoreBefore: 0.21, scoreAfter: 0.24 },
+    ]), true);
+    expect(partly.text).toMatch(/^failed: asked for “waves the right hand”, the motion shows “the right arm is raised above the head” — after right arm edited/);
+    for (const v of [failed, partly]) expect(v.text).not.toMatch(/\bcorrect\b/);
+  });
+
+  it("is pending while the segment is still being generated or corrected", () => {
+    expect(segmentVerdict(seg([], [], "generating"), false)).toEqual({ kind: "pending", text: "generating…" });
+    expect(segmentVerdict(seg([round(0, "correct", [EDIT])], [], "generating"), false).kind).toBe("pending");
+  });
+
+  it("gives each instruction its outcome: accepted, rejected and why, could not apply and why, not tried", () => {
+    const r0 = round(0, "correct", [EDIT, SKATE]);
+    const rejected = seg([r0], [
+      { round: 1, instruction: EDIT, accepted: false, scoreBefore: 0.18, scoreAfter: 0.18, reason: "worse skating_ratio, foot_skating" },
+    ]);
+    expect(instructionOutcomes(rejected, r0, true).map((o) => o.outcome)).toEqual([
+      { kind: "rejected", text: "rejected: it made foot skating worse (score 0.18 → 0.18)" },
+      { kind: "not-tried", text: "not tried: an earlier correction in this round was rejected" },
+    ]);
+    const cannot = seg([r0], [
+      { round: 1, instruction: EDIT, accepted: false, scoreBefore: 0.2, scoreAfter: null, reason: "edit_part needs the SPAM model for one person" },
+      { round: 1, instruction: SKATE, accepted: true, scoreBefore: 0.2, scoreAfter: 0.25 },
+    ]);
+    expect(instructionOutcomes(cannot, r0, true).map((o) => o.outcome.text)).toEqual([
+      "could not apply: edit_part needs the SPAM model for one person",
+      "accepted (score 0.20 → 0.25)",
+    ]);
+    expect(instructionOutcomes(seg([r0]), r0, false)[0].outcome.kind).toBe("pending");
+    expect(instructionOutcomes(seg([r0]), r0, true)[0].outcome.text).toBe("not tried: no correction rounds left");
+  });
+
+  it("keeps a correction's reason through the stream reducer and a stored review", () => {
+    const a = agentFromReview({
+      segments: [
+        {
+          segment: 0,
+          reviews: [{ round: 0, captions: {}, score: 0.1, instructions: [TOUCH], verdict: "correct" }],
+          corrections: [{ round: 1, instruction: TOUCH, accepted: false, score_before: 0.1, score_after: null, reason: "cannot" }],
+        },
+      ],
+    });
+    expect(a[0].corrections[0]).toMatchObject({ reason: "cannot", scoreAfter: null });
+    expect(plainReason("worse skating_ratio, foot_skating, floating")).toBe("it made foot skating and floating worse");
+    expect(plainReason("the captions ('a person stands') hardly agree with 'a person jumps'")).toBe(
+      "the motion hardly matches “a person jumps” (it shows “a person stands”)",
+    );
   });
 });

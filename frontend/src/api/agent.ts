@@ -17,6 +17,8 @@ export interface Correction {
   scoreBefore: number;
   /** null when the instruction could not be applied. */
   scoreAfter: number | null;
+  /** Why it was rejected or could not be applied (absent when accepted). */
+  reason?: string;
 }
 
 export interface SegmentProgress {
@@ -62,6 +64,7 @@ export function reduceAgent(state: AgentState, ev: StreamEvent): AgentState {
         accepted: ev.accepted,
         scoreBefore: ev.score_before,
         scoreAfter: ev.score_after,
+        ...(ev.reason ? { reason: ev.reason } : {}),
       };
       return { ...state, [ev.segment]: { ...s, corrections: [...s.corrections, c] } };
     }
@@ -70,12 +73,154 @@ export function reduceAgent(state: AgentState, ev: StreamEvent): AgentState {
   }
 }
 
-/** A one-line description of a reviewer instruction, e.g. "edit left_arm: raise it (frames 20–40)". */
+/** A part name in words: "left_arm" → "left arm", "left_upper" → "left arm" (the model's parts). */
+export function partWords(part: string | undefined): string {
+  if (!part) return "the body";
+  const model: Record<string, string> = {
+    left_upper: "left arm",
+    right_upper: "right arm",
+    left_lower: "left leg",
+    right_lower: "right leg",
+    whole_body: "whole body",
+    body: "body",
+  };
+  return model[part] ?? part.replace(/_/g, " ");
+}
+
+const span = (f?: [number, number]) => (f ? `frames ${f[0]}–${f[1]}` : "");
+
+/** A reviewer instruction in plain English, e.g. "left arm: “wave the hand” (frames 20–40)",
+ * "redraw frames 51–60", "re-generate with a new seed". */
 export function describeInstruction(i: Instruction): string {
-  const head = i.kind === "edit_part" ? `edit ${i.part ?? "part"}` : i.kind;
-  const what = i.prompt ? `: ${i.prompt}` : "";
-  const span = i.frames ? ` (frames ${i.frames[0]}–${i.frames[1]})` : "";
-  return `${head}${what}${span}`;
+  const frames = i.frames ? ` (${span(i.frames)})` : "";
+  switch (i.kind) {
+    case "edit_part":
+      return `${partWords(i.part)}: “${i.prompt ?? "edit"}”${frames}`;
+    case "inbetween":
+      return i.frames ? `redraw ${span(i.frames)}` : "redraw the frames";
+    case "regenerate":
+      return "re-generate with a new seed";
+    default:
+      return `${i.kind.replace(/_/g, " ")}${i.prompt ? `: “${i.prompt}”` : ""}${frames}`;
+  }
+}
+
+/** What a correction did, in the past tense: "left arm edited (“wave the hand”)",
+ * "frames 51–60 redrawn (foot skating)", "re-generated with a new seed". */
+export function describeFix(i: Instruction): string {
+  switch (i.kind) {
+    case "edit_part":
+      return `${partWords(i.part)} edited (“${i.prompt ?? "edit"}”)`;
+    case "inbetween": {
+      const why = i.reason?.match(/^(.+?) in frames \d+/)?.[1];
+      return `${i.frames ? span(i.frames) : "frames"} redrawn${why ? ` (${why})` : ""}`;
+    }
+    case "regenerate":
+      return "re-generated with a new seed";
+    default:
+      return describeInstruction(i);
+  }
+}
+
+/** Metric keys the reviewer names ("worse skating_ratio, foot_skating") in words. */
+const METRIC_WORDS: Record<string, string> = {
+  skating_ratio: "foot skating",
+  foot_skating: "foot skating",
+  floating: "floating",
+  ground_penetration: "ground penetration",
+  com_lean: "balance",
+  bone_deviation: "bone lengths",
+  intersection_volume: "body overlap",
+  intersection_frequency: "body overlap frames",
+  penetration: "body overlap",
+};
+
+/** The reviewer's reason (why it asked, or why a correction was rejected) in plain words. */
+export function plainReason(reason: string | undefined): string {
+  if (!reason) return "";
+  let m = reason.match(/^the plan says '(.+)', the (?:body )?caption says '(.*)'$/s);
+  if (m) return `asked for “${m[1]}”, the motion shows “${m[2] || "nothing"}”`;
+  m = reason.match(/^the captions \('(.*)'\) hardly agree with '(.+)'$/s);
+  if (m) return `the motion hardly matches “${m[2]}” (it shows “${m[1]}”)`;
+  m = reason.match(/^'(.+)' needs a touch, but the hands never reach the other person$/s);
+  if (m) return `hands never meet (“${m[1]}” needs a touch)`;
+  m = reason.match(/^worse (.+)$/);
+  if (m) {
+    const words = [...new Set(m[1].split(/,\s*/).map((k) => METRIC_WORDS[k] ?? k.replace(/_/g, " ")))];
+    const list = words.length > 1 ? `${words.slice(0, -1).join(", ")} and ${words[words.length - 1]}` : words[0];
+    return `it made ${list} worse`;
+  }
+  return reason;
+}
+
+const score = (x: number | null) => (x === null || !Number.isFinite(x) ? "–" : x.toFixed(2));
+
+export type OutcomeKind = "accepted" | "rejected" | "not-applied" | "not-tried" | "pending";
+
+export interface Outcome {
+  kind: OutcomeKind;
+  text: string;
+}
+
+/** What became of one correction: "accepted (score 0.12 → 0.16)", "rejected: the score
+ * dropped (0.14 → 0.11)", "could not apply: part edits need the SPAM model …". */
+export function correctionOutcome(c: Correction): Outcome {
+  const scores = `score ${score(c.scoreBefore)} → ${score(c.scoreAfter)}`;
+  if (c.accepted) return { kind: "accepted", text: `accepted (${scores})` };
+  if (c.scoreAfter === null) return { kind: "not-applied", text: `could not apply: ${plainReason(c.reason) || "no reason given"}` };
+  return { kind: "rejected", text: `rejected: ${plainReason(c.reason) || "it did not help"} (${scores})` };
+}
+
+const sameInstruction = (a: Instruction, b: Instruction) =>
+  a.kind === b.kind && a.part === b.part && a.prompt === b.prompt && String(a.frames ?? "") === String(b.frames ?? "");
+
+/** Each instruction of review round `r` with its outcome: the corrections of round r + 1 try
+ * the instructions of review round r (the reviewer's loop); one not tried says why. */
+export function instructionOutcomes(
+  seg: SegmentProgress,
+  r: ReviewRound,
+  finished: boolean,
+): { instruction: Instruction; outcome: Outcome }[] {
+  const tried = seg.corrections.filter((c) => c.round === r.round + 1);
+  const rejected = tried.some((c) => !c.accepted && c.scoreAfter !== null);
+  const used = new Set<Correction>();
+  return r.instructions.map((instruction) => {
+    const c = tried.find((x) => !used.has(x) && sameInstruction(x.instruction, instruction));
+    if (c) {
+      used.add(c);
+      return { instruction, outcome: correctionOutcome(c) };
+    }
+    if (rejected) return { instruction, outcome: { kind: "not-tried", text: "not tried: an earlier correction in this round was rejected" } };
+    if (!finished) return { instruction, outcome: { kind: "pending", text: "waiting…" } };
+    return { instruction, outcome: { kind: "not-tried", text: "not tried: no correction rounds left" } };
+  });
+}
+
+export type VerdictKind = "passed" | "corrected" | "failed" | "pending";
+
+export interface Verdict {
+  kind: VerdictKind;
+  text: string;
+}
+
+/** A segment's review outcome in words: "passed", "corrected: left arm edited (…)" or
+ * "failed: hands never meet (…)"; pending while it is still generated or reviewed. The
+ * reviewer's own verdict "correct" means "needs correction", so it is never shown as is.
+ * `finished`: the job is over (a stored motion, or done / failed), so no more rounds come. */
+export function segmentVerdict(seg: SegmentProgress | undefined, finished: boolean): Verdict {
+  const last = seg?.reviews[seg.reviews.length - 1];
+  if (!seg || !last) {
+    if (finished || seg?.status === "done") return { kind: "pending", text: "not reviewed" };
+    return { kind: "pending", text: seg?.status === "generating" ? "generating…" : "waiting…" };
+  }
+  const fixes = seg.corrections.filter((c) => c.accepted).map((c) => describeFix(c.instruction));
+  if (last.verdict === "ok") return fixes.length ? { kind: "corrected", text: `corrected: ${fixes.join("; ")}` } : { kind: "passed", text: "passed" };
+  // still needs correction: the segment is not done while its correction rounds run
+  if (!finished && seg.status !== "done") return { kind: "pending", text: "needs correction — correcting…" };
+  const why = plainReason(last.instructions[0]?.reason) || describeInstruction(last.instructions[0] ?? { kind: "regenerate" });
+  const more = last.instructions.length > 1 ? ` (+${last.instructions.length - 1} more)` : "";
+  const partly = fixes.length ? ` — after ${fixes.join("; ")}` : "";
+  return { kind: "failed", text: `failed: ${why}${more}${partly}` };
 }
 
 interface StoredReview {

@@ -27,8 +27,8 @@ describe("reactRequest", () => {
   });
 
   it("describes the version it makes", () => {
-    expect(describeReaction("shake hands")).toBe("B reacts to A: shake hands");
-    expect(describeReaction(null)).toBe("B reacts to A");
+    expect(describeReaction("shake hands")).toBe("Person 2 reacts to Person 1: shake hands");
+    expect(describeReaction(null)).toBe("Person 2 reacts to Person 1");
   });
 });
 

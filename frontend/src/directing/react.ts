@@ -1,4 +1,4 @@
-// "B reacts to A": which motions can get a reactor, and the job request that adds one.
+// "Person 2 reacts to Person 1": which motions can get a reactor, and the job request that adds one.
 // Pure (no store, no network): studio.ts runs the job, ui/ReactorPanel.tsx offers it.
 import type { ReactRequest } from "../api/types";
 import type { StreamState } from "../api/stream";
@@ -21,7 +21,7 @@ export function reactRequest(actorId: string, intent: string, seed?: number): Re
   return req;
 }
 
-/** What a react version says about itself: "B reacts to A: shake hands". */
+/** What a react version says about itself: "Person 2 reacts to Person 1: shake hands". */
 export function describeReaction(prompt: string | null | undefined): string {
-  return prompt ? `B reacts to A: ${prompt}` : "B reacts to A";
+  return prompt ? `Person 2 reacts to Person 1: ${prompt}` : "Person 2 reacts to Person 1";
 }

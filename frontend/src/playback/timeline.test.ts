@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { advance, blendAt, formatSeconds, frameIndex, playFrom, scrubFrame } from "./timeline";
+import { THUMB_PX, advance, blendAt, formatSeconds, frameIndex, framePercent, frameToX, playFrom, scrubFrame, xToFrame } from "./timeline";
 
 const ctx = { fps: 20, speed: 1, loop: false, available: 60, total: 60 };
 
@@ -38,5 +38,22 @@ describe("timeline", () => {
     expect(blendAt(9.5, 10)).toEqual({ frame: 9, next: 9, weight: 0 });
     expect(blendAt(4, 10)).toEqual({ frame: 4, next: 5, weight: 0 });
     expect(blendAt(0.5, 1)).toEqual({ frame: 0, next: 0, weight: 0 });
+  });
+});
+
+describe("one pixel mapping for the scrubber and the track", () => {
+  it("puts the first frame half a thumb in from the left and the last half a thumb in from the right", () => {
+    expect(frameToX(0, 81, 100, 614)).toBe(100 + THUMB_PX / 2);
+    expect(frameToX(80, 81, 100, 614)).toBe(100 + 614 - THUMB_PX / 2);
+    expect(frameToX(40, 81, 100, 614)).toBe(100 + 614 / 2);
+    expect(framePercent(20, 81)).toBe("25%");
+    expect(framePercent(0, 1)).toBe("0%");
+  });
+
+  it("maps x back to the same frame, clamped to the clip", () => {
+    for (const f of [0, 1, 17, 40, 79, 80]) expect(xToFrame(frameToX(f, 81, 12, 500), 81, 12, 500)).toBe(f);
+    expect(xToFrame(0, 81, 12, 500)).toBe(0);
+    expect(xToFrame(10_000, 81, 12, 500)).toBe(80);
+    expect(xToFrame(50, 1, 12, 500)).toBe(0);
   });
 });

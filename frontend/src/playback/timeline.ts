@@ -63,3 +63,32 @@ export function formatSeconds(frames: number, fps: number): string {
 export function playFrom(pos: number, available: number, total: number): number {
   return available >= total && available > 0 && pos >= available - 1 ? 0 : pos;
 }
+
+/** Width (CSS px) of the scrubber's thumb (styles.css `--thumb`). A native range input puts
+ * value 0 at half a thumb from its left edge and the last value half a thumb from its right,
+ * so everything drawn along the timeline (segments, marks, playhead, the distance plot) is
+ * inset by half a thumb on each side and shares this one mapping. */
+export const THUMB_PX = 14;
+
+/** Fraction in [0, 1] along the usable width for a frame of a clip of `total` frames. */
+export function frameFraction(frame: number, total: number): number {
+  if (total <= 1) return 0;
+  return Math.min(1, Math.max(0, frame / (total - 1)));
+}
+
+/** Client x (px) of a frame on a scrubber whose box starts at `left` and is `width` wide. */
+export function frameToX(frame: number, total: number, left: number, width: number, thumb = THUMB_PX): number {
+  return left + thumb / 2 + frameFraction(frame, total) * Math.max(0, width - thumb);
+}
+
+/** The frame under client x on the same scrubber (nearest; clamped to the clip). */
+export function xToFrame(x: number, total: number, left: number, width: number, thumb = THUMB_PX): number {
+  const usable = width - thumb;
+  if (total <= 1 || usable <= 0) return 0;
+  return scrubFrame((x - left - thumb / 2) / usable, total);
+}
+
+/** CSS `left` of a frame inside the inset box (percent of its width). */
+export function framePercent(frame: number, total: number): string {
+  return `${100 * frameFraction(frame, total)}%`;
+}

@@ -5,6 +5,7 @@
 // rasterisers (SwiftShader drops them), triangles are not. With a shadow map, a
 // ShadowMaterial plane on top darkens where the people's shadows fall.
 import * as THREE from "three";
+import type { StagePalette } from "./palette";
 
 const vertexShader = /* glsl */ `
   varying vec3 vWorld;
@@ -76,6 +77,14 @@ export class Ground {
       catcher.receiveShadow = true;
       this.group.add(catcher);
     }
+  }
+
+  /** Recolour the floor (the UI theme): floor, grid lines and the colour it fades into. */
+  setPalette(p: StagePalette): void {
+    this.uniforms.uFloor.value.copy(display(p.floor));
+    this.uniforms.uMinor.value.copy(display(p.minor));
+    this.uniforms.uMajor.value.copy(display(p.major));
+    this.uniforms.uFar.value.copy(display(p.background));
   }
 
   /** Centre the fade (and the shadow catcher) on a point of the floor. */

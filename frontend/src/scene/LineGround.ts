@@ -8,6 +8,7 @@
 // behind the camera are clipped wrongly by some software rasterisers (SwiftShader), short ones
 // are not.
 import * as THREE from "three";
+import type { StagePalette } from "./palette";
 
 /** The floor colour of Ground.ts: the light stage's background. */
 export const FLOOR_COLOUR = "#181b22";
@@ -52,6 +53,8 @@ const smooth = (a: number, b: number, x: number) => {
 export class LineGround {
   readonly group = new THREE.Group();
   private readonly grid: THREE.LineSegments;
+  /** Per vertex: major line or not, and its fade (0 near, 1 faded out), to recolour it. */
+  private readonly kinds: { major: boolean; fade: number }[] = [];
 
   constructor() {
     const floorColour = display(FLOOR_COLOUR);
@@ -74,6 +77,7 @@ export class LineGround {
           points.push(x, 0.002, z);
           const fade = smooth(radius * 0.3, radius, Math.hypot(x, z));
           c.copy(lineColour).lerp(floorColour, fade).toArray(cols, cols.length);
+          this.kinds.push({ major: isMajor, fade });
         }
       }
     }
@@ -83,6 +87,19 @@ export class LineGround {
     this.grid = new THREE.LineSegments(lines, flatMaterial());
     this.grid.renderOrder = -1;
     this.group.add(this.grid);
+  }
+
+  /** Recolour the grid for a floor colour (the UI theme; the stage clears to `p.floor`). */
+  setPalette(p: StagePalette): void {
+    const floorColour = display(p.floor);
+    const [minor, major] = [display(p.minor), display(p.major)];
+    const colours = this.grid.geometry.getAttribute("color") as THREE.BufferAttribute;
+    const c = new THREE.Color();
+    this.kinds.forEach((k, i) => {
+      c.copy(k.major ? major : minor).lerp(floorColour, k.fade);
+      colours.setXYZ(i, c.r, c.g, c.b);
+    });
+    colours.needsUpdate = true;
   }
 
   /** Centre the fade on a point: the grid moves in whole major cells (it stays on the world's

@@ -3,7 +3,7 @@
 import * as THREE from "three";
 import type { Point } from "../directing/path";
 
-export const PATH_COLOURS = ["#5b8cff", "#ff9a5b"]; // person A, person B
+export const PATH_COLOURS = ["#5b8cff", "#ff9a5b"]; // Person 1, Person 2
 const LIFT = 0.02; // above the floor, below the feet
 const ARROW_EVERY = 0.6; // metres between direction arrows
 

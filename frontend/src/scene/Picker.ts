@@ -8,6 +8,14 @@ export interface JointHit {
 }
 
 const GROUND = new THREE.Plane(new THREE.Vector3(0, 1, 0), 0);
+/** Metres from the camera beyond which a floor hit is not taken: near the horizon a pixel
+ * spans metres of floor, so a short stroke there became a path tens of metres long. */
+export const MAX_GROUND_DISTANCE = 25;
+
+/** Whether a floor hit is near enough to the camera to draw on. */
+export function usableGroundHit(hit: { x: number; y: number; z: number } | null, camera: { x: number; y: number; z: number }, max = MAX_GROUND_DISTANCE): boolean {
+  return hit !== null && Math.hypot(hit.x - camera.x, hit.y - camera.y, hit.z - camera.z) <= max;
+}
 
 export class Picker {
   private readonly ray = new THREE.Raycaster();
@@ -26,10 +34,12 @@ export class Picker {
     return this.ray;
   }
 
-  /** Ground point [x, z] under the pointer, or null (looking above the horizon). */
+  /** Ground point [x, z] under the pointer, or null (above the horizon, or so close to it
+   * that the hit is over MAX_GROUND_DISTANCE away). */
   ground(clientX: number, clientY: number): [number, number] | null {
-    const hit = this.aim(clientX, clientY).ray.intersectPlane(GROUND, new THREE.Vector3());
-    return hit ? [hit.x, hit.z] : null;
+    const ray = this.aim(clientX, clientY).ray;
+    const hit = ray.intersectPlane(GROUND, new THREE.Vector3());
+    return hit && usableGroundHit(hit, ray.origin) ? [hit.x, hit.z] : null;
   }
 
   /** The nearest mannequin joint (or bone, by its child joint) under the pointer. */

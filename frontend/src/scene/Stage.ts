@@ -11,8 +11,12 @@ import { Mannequin } from "./Mannequin";
 import { PathOverlay } from "./PathOverlay";
 import { QUALITY, type Quality, type QualitySettings } from "./quality";
 import { debugFlags } from "./debugFlags";
+import { setBodyAmbient } from "./bodyMaterial";
+import { PALETTES, type StageTheme } from "./palette";
 
-const BACKGROUND = "#14161b";
+const BACKGROUND = PALETTES.dark.background;
+/** Metres above the people the top view looks down from (about 9 m of floor across at 40°). */
+const TOP_VIEW_HEIGHT = 12;
 
 /** The quality's body tessellation replaced by `?tess=` (debugFlags.ts), for profiling. */
 function withTessellation(q: QualitySettings, tess: "old" | number[] | null): QualitySettings {
@@ -28,6 +32,12 @@ export class Stage {
   readonly camera = new THREE.PerspectiveCamera(40, 1, 0.05, 200);
   readonly controls: OrbitControls;
   private readonly sun = new THREE.DirectionalLight("#ffffff", 2.2);
+  private readonly hemi = new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4);
+  /** The camera's offset from its target before the top view, to go back to. */
+  private orbitOffset: THREE.Vector3 | null = null;
+  /** While true the camera does not follow the people (drawing a path: the floor must not
+   * slide under the pointer as they walk, or loop back). */
+  followPaused = false;
   private readonly ground: Ground | LineGround;
   private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
@@ -68,7 +78,7 @@ export class Stage {
     this.scene.background = new THREE.Color(settings.gridLines ? FLOOR_COLOUR : BACKGROUND);
     this.ground = settings.gridLines ? new LineGround() : new Ground(BACKGROUND, settings.shadowMap);
 
-    this.scene.add(new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4));
+    this.scene.add(this.hemi);
     this.sun.position.set(3, 7, 5);
     this.sun.castShadow = settings.shadowMap;
     this.sun.shadow.mapSize.set(2048, 2048);
@@ -93,6 +103,39 @@ export class Stage {
     this.controls.maxDistance = 30;
     this.controls.addEventListener("change", () => (this.dirty = true));
     this.controls.update();
+  }
+
+  /** Colours for the UI theme: background, floor grid and the floor's light bounce. */
+  setTheme(theme: StageTheme): void {
+    const p = PALETTES[theme];
+    (this.scene.background as THREE.Color).set(this.settings.gridLines ? p.floor : p.background);
+    this.ground.setPalette(p);
+    this.hemi.color.set(p.sky);
+    this.hemi.groundColor.set(p.bounce);
+    setBodyAmbient(p.sky, p.bounce);
+    this.dirty = true;
+  }
+
+  /** Look straight down on the people (for drawing a path), or back to the orbit view as it was. */
+  setTopView(on: boolean): void {
+    if (on === (this.orbitOffset !== null)) return;
+    const target = this.controls.target;
+    if (on) {
+      this.orbitOffset = this.camera.position.clone().sub(target);
+      // a hair off vertical, from +Z: the floor is seen as from the front view, +Z down the screen
+      this.camera.position.set(target.x, target.y + TOP_VIEW_HEIGHT, target.z + 0.001);
+      this.controls.enableRotate = false;
+    } else {
+      this.camera.position.copy(target).add(this.orbitOffset!);
+      this.orbitOffset = null;
+      this.controls.enableRotate = true;
+    }
+    this.controls.update();
+    this.dirty = true;
+  }
+
+  get topView(): boolean {
+    return this.orbitOffset !== null;
   }
 
   /** The pixel ratio drawn at (dynamic resolution changes it while playing). */
@@ -186,6 +229,11 @@ export class Stage {
     this.controls.target.set(centre.x, 0.9, centre.z);
     const dir = new THREE.Vector3(0.42, 0.3, 1).normalize();
     this.camera.position.copy(this.controls.target).addScaledVector(dir, distance);
+    if (this.orbitOffset) {
+      // in the top view: keep looking down, and go back to this orbit view when it ends
+      this.orbitOffset.copy(this.camera.position).sub(this.controls.target);
+      this.camera.position.set(centre.x, this.controls.target.y + TOP_VIEW_HEIGHT, centre.z + 0.001);
+    }
     this.moveLights(centre);
     this.controls.update();
     this.dirty = true;
@@ -194,6 +242,7 @@ export class Stage {
   /** Keep the people in view: move the camera (and what depends on it) with their centre,
    * keeping the user's orbit. */
   private follow(buffer: FrameBuffer, t: number, next: number, weight: number): void {
+    if (this.followPaused) return;
     const centre = this.centreAt(buffer, t, this.centre);
     if (weight > 0) centre.lerp(this.centreAt(buffer, next, this.centreNext), weight);
     const delta = this.delta.set(centre.x - this.controls.target.x, 0, centre.z - this.controls.target.z);

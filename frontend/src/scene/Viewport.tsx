@@ -49,6 +49,7 @@ export function Viewport() {
     const picker = new Picker(canvas, stage.camera);
     sceneProbe.ground = (cx, cy) => picker.ground(cx, cy);
     let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1 };
+    let look = { theme: "", top: false };
     let generation = -1; // which FrameBuffer contents the mannequins were built for
     let drawn = { pos: -1, version: -1 };
     let last = performance.now();
@@ -71,6 +72,12 @@ export function Viewport() {
         }
       }
       stage.controls.enabled = s.tool !== "path";
+      // drawing: the floor must stay put under the pointer (no following the people)
+      stage.followPaused = s.tool === "path";
+      if (look.theme !== s.theme) stage.setTheme(s.theme);
+      const top = s.topView && s.tool === "path";
+      if (look.top !== top) stage.setTopView(top);
+      look = { theme: s.theme, top };
       if (overlay.pointer !== pointer.version || overlay.path !== s.path || overlay.tool !== s.tool ||
         overlay.selected !== s.selected || overlay.gen !== generation) {
         const points = pointer.drawing ?? s.path.points;

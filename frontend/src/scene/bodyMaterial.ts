@@ -62,6 +62,13 @@ const fragmentShader = /* glsl */ `
   }
 `;
 
+/** The sky and floor-bounce colours of the per-vertex light (the UI theme; every body's
+ * material shares these uniform values, so this relights them all). */
+export function setBodyAmbient(sky: string, bounce: string): void {
+  HEMI_SKY.set(sky).multiplyScalar(1.4);
+  HEMI_GROUND.set(bounce).multiplyScalar(1.4);
+}
+
 /** Per-vertex lit material for software rendering (tone mapping and sRGB done in the shader). */
 export function vertexLitMaterial(): THREE.ShaderMaterial {
   return new THREE.ShaderMaterial({

@@ -1,4 +1,5 @@
 import { useState, type FormEvent } from "react";
+import { personName } from "./format";
 import { useShallow } from "zustand/react/shallow";
 import { applyPartEdit } from "../directing/actions";
 import { PART_LABELS } from "../directing/parts";
@@ -31,7 +32,7 @@ export function PartEditor() {
       <div className="part-editor__head">
         <strong data-testid="selected-part">
           {PART_LABELS[s.selected.part]}
-          {two ? ` · person ${s.selected.person === 0 ? "A" : "B"}` : ""}
+          {two ? ` · ${personName(s.selected.person)}` : ""}
         </strong>
         <button type="button" className="icon-button" aria-label="Close" onClick={() => s.select(null)}>
           ×

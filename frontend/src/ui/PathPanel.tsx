@@ -2,10 +2,11 @@ import { useShallow } from "zustand/react/shallow";
 import { applyPathToMotion } from "../directing/actions";
 import { PRESETS, pathLength, presetPoints, type Preset } from "../directing/path";
 import { useStudio } from "../store";
+import { personName } from "./format";
 
 const PRESET_LABELS: Record<Preset, string> = { circle: "◯ Circle", zigzag: "Zigzag", s: "S", heart: "♡ Heart" };
 
-/** The path a person follows: presets, size, person A/B, clear, apply to the current motion. */
+/** The path a person follows: presets, size, Person 1 / 2, clear, apply to the current motion. */
 export function PathPanel() {
   const s = useStudio(
     useShallow((s) => ({
@@ -35,7 +36,7 @@ export function PathPanel() {
               disabled={p === 1 && s.persons < 2}
               onClick={() => s.setPath({ person: p })}
             >
-              Person {p === 0 ? "A" : "B"}
+              {personName(p)}
             </button>
           ))}
         </div>
@@ -66,7 +67,7 @@ export function PathPanel() {
       </label>
       <p className="muted small" data-testid="path-summary">
         {path.points.length >= 2
-          ? `${path.points.length} points · ${pathLength(path.points).toFixed(1)} m · Generate follows it`
+          ? `${path.points.length} points · ${pathLength(path.points).toFixed(1)} m · ${personName(path.person)} follows it in the next Generate`
           : "Drag on the floor to draw, or pick a preset."}
       </p>
       <div className="button-row">
@@ -82,5 +83,32 @@ export function PathPanel() {
         </button>
       </div>
     </section>
+  );
+}
+
+/** Beside Generate while a path is set: it applies to the next Generate only (then it is
+ * used up), with a button to remove it first. */
+export function PathChip() {
+  const path = useStudio((s) => s.path);
+  const setPath = useStudio((s) => s.setPath);
+  const persons = useStudio((s) => s.persons);
+  if (path.points.length < 2) return null;
+  const who = personName(Math.min(path.person, persons - 1));
+  return (
+    <span className="chip" data-testid="path-chip" title={`The next Generate sends this path: ${who} walks it. Then it is cleared.`}>
+      <span className="chip__text">
+        ↝ {pathLength(path.points).toFixed(1)} m path · next Generate
+      </span>
+      <button
+        type="button"
+        className="chip__remove"
+        data-testid="path-chip-remove"
+        aria-label="Remove the path"
+        title="Remove the path"
+        onClick={() => setPath({ points: [], preset: null })}
+      >
+        ×
+      </button>
+    </span>
   );
 }

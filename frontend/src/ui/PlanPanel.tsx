@@ -3,15 +3,16 @@ import { useStudio } from "../store";
 import type { EditInfo } from "../api/types";
 import { describeReaction } from "../directing/react";
 import { SegmentCard } from "./SegmentCard";
+import { personName } from "./format";
 
-/** "left_arm: wave · frames 10–51" or "path (person A)". */
+/** "left_arm: wave · frames 10–51" or "path (Person 1)". */
 export function describeEdit(e: EditInfo): string {
   if (e.mode === "react") return describeReaction(e.prompt);
   if (e.mode === "rerun") return `segment ${(e.segment ?? 0) + 1} generated again with a new seed${e.prompt ? ` (“${e.prompt}”)` : ""}`;
   const parts = [
     e.prompt ? `${e.part ?? "whole_body"}: ${e.prompt}` : null,
     e.frames ? `frames ${e.frames[0]}–${e.frames[1]}` : null,
-    e.trajectory ? `path (person ${e.trajectory.person === 1 ? "B" : "A"})` : null,
+    e.trajectory ? `path (${personName(e.trajectory.person)})` : null,
   ].filter(Boolean);
   return parts.join(" · ") || "an edit";
 }
@@ -50,6 +51,7 @@ export function PlanPanel() {
               progress={s.agent[i]}
               canRerun={!busy}
               canInbetween={!busy && s.phase === "done" && s.persons === 1 && Boolean(s.motionId)}
+              finished={s.phase === "done" || s.phase === "error"}
             />
           ))}
         </ol>
@@ -62,12 +64,16 @@ export function PlanPanel() {
       {trajectory && (
         <p className="small plan__meta" data-testid="plan-trajectory">
           path: {trajectory.shape ?? "drawn"}
-          {typeof trajectory.person === "number" ? ` · person ${trajectory.person === 0 ? "A" : "B"}` : ""}
+          {typeof trajectory.person === "number" ? ` · ${personName(trajectory.person)}` : ""}
         </p>
       )}
       {plan && (plan.planner || plan.generator) && (
-        <p className="muted small plan__meta">
-          {[plan.planner && `planner: ${plan.planner}`, plan.generator && `generator: ${plan.generator}`]
+        <p className="muted small plan__meta" data-testid="plan-meta">
+          {[
+            plan.planner && `planner: ${plan.planner}`,
+            plan.generator && `generator: ${plan.generator}`,
+            typeof plan.seed === "number" && `seed ${plan.seed}`,
+          ]
             .filter(Boolean)
             .join(" · ")}
         </p>

@@ -2,6 +2,8 @@ import type { FormEvent } from "react";
 import { useShallow } from "zustand/react/shallow";
 import { generate, generateBlocked } from "../studio";
 import { useStudio, type Persons } from "../store";
+import { PathChip } from "./PathPanel";
+import { SeedField } from "./SeedField";
 
 const EXAMPLES = ["a person walks forward", "two people dance salsa", "a person jumps twice"];
 
@@ -18,6 +20,7 @@ export function PromptBar() {
     })),
   );
   const phase = useStudio((s) => s.stream.phase);
+  const limits = useStudio((s) => s.limits); // from the API's schema (api/limits.ts)
   const busy = phase === "connecting" || phase === "generating";
   // one job per intent: disabled while this very request starts or runs; a changed one may go
   // (it replaces the running job)
@@ -36,7 +39,7 @@ export function PromptBar() {
         aria-label="Prompt"
         placeholder={`Describe a motion, e.g. “${EXAMPLES[(persons - 1) % EXAMPLES.length]}”`}
         value={prompt}
-        maxLength={600}
+        maxLength={limits.promptMax}
         onChange={(e) => setPrompt(e.target.value)}
       />
       <div className="segmented" role="group" aria-label="Persons">
@@ -59,14 +62,16 @@ export function PromptBar() {
           type="number"
           data-testid="seconds"
           aria-label="Seconds"
-          min={1}
-          max={20}
+          min={limits.secondsMin}
+          max={limits.secondsMax}
           step={1}
           value={seconds}
           onChange={(e) => setSeconds(Number(e.target.value))}
         />
         <span>s</span>
       </label>
+      <SeedField />
+      <PathChip />
       <button
         className="primary"
         type="submit"

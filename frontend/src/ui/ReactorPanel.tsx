@@ -6,7 +6,7 @@ import { useStudio } from "../store";
 
 const INTENTS = ["shake hands", "dance with them", "hug", "push them away", "follow them"];
 
-/** "B reacts to A": add a second person who reacts, frame by frame, to the one-person motion on
+/** "Person 2 reacts to Person 1": add a second person who reacts, frame by frame, to the one-person motion on
  * stage (an optional intent steers them). Shown for a finished one-person motion only. */
 export function ReactorPanel() {
   const s = useStudio(
@@ -23,10 +23,10 @@ export function ReactorPanel() {
   };
   return (
     <section className="panel" aria-labelledby="reactor-title" data-testid="reactor">
-      <h2 id="reactor-title">B reacts to A</h2>
+      <h2 id="reactor-title">Person 2 reacts</h2>
       <form className="reactor" onSubmit={submit}>
         <p className="muted small">
-          Add a second person (B) who reacts to this one, generated frame by frame as A moves.
+          Add Person 2, who reacts to Person 1, generated frame by frame as Person 1 moves.
         </p>
         <input
           data-testid="reactor-intent"

@@ -1,4 +1,4 @@
-import { describeInstruction, type SegmentProgress } from "../api/agent";
+import { describeInstruction, instructionOutcomes, partWords, plainReason, segmentVerdict, type SegmentProgress } from "../api/agent";
 import type { PlanSegment } from "../api/types";
 import { rerunSegment } from "../directing/actions";
 import { FPS } from "../store";
@@ -19,12 +19,15 @@ interface Props {
   progress?: SegmentProgress;
   canRerun: boolean;
   canInbetween: boolean;
+  /** The job is over (or the motion is stored): no more review rounds will come. */
+  finished?: boolean;
 }
 
 /** One plan segment in the agent timeline: prompt, part edits, status, review rounds, corrections. */
-export function SegmentCard({ index, seg, progress, canRerun, canInbetween }: Props) {
+export function SegmentCard({ index, seg, progress, canRerun, canInbetween, finished = false }: Props) {
   const n = peopleCount(seg.persons);
   const base = (seg as { base?: string }).base;
+  const verdict = progress ? segmentVerdict(progress, finished) : null;
   return (
     <li className="segment" data-testid={`segment-${index}`}>
       <div className="segment__head">
@@ -44,31 +47,37 @@ export function SegmentCard({ index, seg, progress, canRerun, canInbetween }: Pr
           + {part.replace("_", " ")}: {text}
         </span>
       ))}
+      {verdict && (
+        <p className={`small verdict verdict--${verdict.kind}`} data-testid={`segment-verdict-${index}`}>
+          {verdict.text}
+        </p>
+      )}
       {progress?.reviews.map((r) => (
         <div key={r.round} className="review" data-testid="review">
           <div className="review__head small">
-            <span>round {r.round}</span>
-            <span className={`badge badge--${r.verdict}`}>{r.verdict}</span>
-            <span className="muted">score {Number.isFinite(r.score) ? r.score.toFixed(2) : "–"}</span>
+            <span>{r.round === 0 ? "review" : `review after round ${r.round}`}</span>
+            <span className={`badge badge--${r.verdict === "ok" ? "ok" : "correct"}`}>{r.verdict === "ok" ? "passed" : "needs correction"}</span>
+            <span className="muted" title="How well the motion matches the text (−1 … 1)">
+              score {Number.isFinite(r.score) ? r.score.toFixed(2) : "–"}
+            </span>
           </div>
           {Object.entries(r.captions).map(([part, text]) => (
             <p key={part} className="small review__caption">
-              <span className="muted">{part}:</span> {text}
+              <span className="muted">{partWords(part)}:</span> {text}
             </p>
           ))}
-          {r.instructions.map((ins, k) => (
-            <p key={k} className="small review__instruction" title={ins.reason}>
-              → {describeInstruction(ins)}
-            </p>
-          ))}
-          {progress.corrections
-            .filter((c) => c.round === r.round)
-            .map((c, k) => (
-              <p key={k} className="small" data-testid="correction">
-                {c.accepted ? "✓ accepted" : "✗ rejected"} {describeInstruction(c.instruction)} ·{" "}
-                {c.scoreBefore.toFixed(2)} → {c.scoreAfter === null ? "—" : c.scoreAfter.toFixed(2)}
+          {instructionOutcomes(progress, r, finished || progress.status === "done").map(({ instruction, outcome }, k) => (
+            <div key={k} className="small review__instruction" data-testid="instruction">
+              <p>
+                → {describeInstruction(instruction)}
+                {instruction.reason && <span className="muted"> · why: {plainReason(instruction.reason)}</span>}
               </p>
-            ))}
+              <p className={`outcome outcome--${outcome.kind}`} data-testid="correction" data-outcome={outcome.kind}>
+                {outcome.kind === "accepted" ? "✓ " : outcome.kind === "rejected" || outcome.kind === "not-applied" ? "✗ " : "· "}
+                {outcome.text}
+              </p>
+            </div>
+          ))}
         </div>
       ))}
       <div className="button-row segment__actions">

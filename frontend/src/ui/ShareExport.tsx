@@ -1,6 +1,7 @@
 import { useState } from "react";
 import { exportUrl, shareUrl } from "../api/client";
 import { useStudio } from "../store";
+import { personName } from "./format";
 
 /** Share link (copied to the clipboard and shown) and downloads: BVH per person, JSON. */
 export function ShareExport() {
@@ -29,7 +30,7 @@ export function ShareExport() {
     for (let p = 0; p < persons; p++) {
       const a = document.createElement("a");
       a.href = exportUrl(motionId, "bvh", p);
-      a.download = `interplay-${motionId}-person${p}.bvh`;
+      a.download = `interplay-${motionId}-person${p + 1}.bvh`; // Person 1 → person1 (the API names it so too)
       document.body.appendChild(a);
       a.click();
       a.remove();
@@ -52,7 +53,7 @@ export function ShareExport() {
             aria-disabled={!ready}
             download
           >
-            BVH{persons === 2 ? ` · person ${p + 1}` : ""}
+            BVH{persons === 2 ? ` · ${personName(p)}` : ""}
           </a>
         ))}
         {ready && persons === 2 && (

@@ -1,8 +1,10 @@
 import { useShallow } from "zustand/react/shallow";
 import { SPEEDS, formatSeconds, playFrom } from "../playback/timeline";
 import { FPS, frames, playhead, useStudio } from "../store";
+import { TimelineTrack } from "./TimelineTrack";
 
-/** Play/pause, scrubber, speed, loop and the frame counter. */
+/** Play/pause, the track (segments, marks, playhead) over the scrubber in one lane (one pixel
+ * mapping: playback/timeline.ts `frameToX`), speed, loop and the frame counter. */
 export function Timeline() {
   const s = useStudio(
     useShallow((s) => ({
@@ -35,23 +37,26 @@ export function Timeline() {
         onClick={toggle}
         disabled={empty}
         aria-label={s.playing && !empty ? "Pause" : "Play"}
-        title={s.playing && !empty ? "Pause" : "Play"}
+        title={s.playing && !empty ? "Pause (Space)" : "Play (Space)"}
       >
         {s.playing && !empty ? "❚❚" : "▶"}
       </button>
-      <input
-        className="timeline__scrubber"
-        data-testid="scrubber"
-        type="range"
-        aria-label="Frame"
-        min={0}
-        max={Math.max(0, total - 1)}
-        step={1}
-        value={s.frame}
-        disabled={empty}
-        onChange={(e) => s.seek(Math.min(Number(e.target.value), Math.max(0, s.received - 1)))}
-        style={{ ["--loaded" as string]: `${total ? (100 * s.received) / total : 0}%` }}
-      />
+      <div className="timeline__lane">
+        <TimelineTrack />
+        <input
+          className="timeline__scrubber"
+          data-testid="scrubber"
+          type="range"
+          aria-label="Frame"
+          min={0}
+          max={Math.max(0, total - 1)}
+          step={1}
+          value={s.frame}
+          disabled={empty}
+          onChange={(e) => s.seek(Math.min(Number(e.target.value), Math.max(0, s.received - 1)))}
+          style={{ ["--loaded" as string]: `${total ? (100 * s.received) / total : 0}%` }}
+        />
+      </div>
       <span className="timeline__counter" data-testid="frame-counter">
         <span>
           {shown} / {total}
@@ -72,7 +77,7 @@ export function Timeline() {
           </option>
         ))}
       </select>
-      <label className="toggle" title="Loop playback">
+      <label className="toggle" title="Loop playback" data-testid="loop-toggle">
         <input type="checkbox" data-testid="loop" checked={s.loop} onChange={(e) => s.setLoop(e.target.checked)} />
         Loop
       </label>

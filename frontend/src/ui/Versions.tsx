@@ -46,8 +46,18 @@ export function Versions() {
       <span className="small muted" data-testid="version-label">
         {versions.ids.length ? `v${versions.index + 1} / ${versions.ids.length}` : "no versions"}
       </span>
-      <button data-testid="copy-link" disabled={!s.motionId} onClick={() => void copy()} title="Copy a link to this version">
-        {copied && copied === s.motionId ? "Copied ✓" : "Copy link"}
+      <button
+        data-testid="copy-link"
+        className="versions__copy"
+        disabled={!s.motionId}
+        onClick={() => void copy()}
+        title="Copy a link to this version"
+        aria-label={copied && copied === s.motionId ? "Link copied" : "Copy link"}
+      >
+        <span className="versions__copy-text">{copied && copied === s.motionId ? "Copied ✓" : "Copy link"}</span>
+        <span className="versions__copy-icon" aria-hidden="true">
+          {copied && copied === s.motionId ? "✓" : "Link"}
+        </span>
       </button>
     </div>
   );
