@@ -6,6 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from models.common.sources import licence_section
+
 
 def _table(report: dict) -> list[str]:
     cols = ("fid", "fid_stats", "iv_cm3", "if", "contact_frames", "foot_skating")
@@ -45,7 +47,7 @@ def write_card(weights: Path, ckpt_dir: Path) -> Path:
         "actor's first-frame heading frame (66 numbers per person and frame), normalised by "
         "one mean/std shared by both people (`normalizer.npz`). Optional intent: the MiniLM "
         "embedding of the clip prompt (dropped to zeros 20 % of the time: the no-prompt case).",
-        "", "## Network and training", "",
+        "", *licence_section(summary.get("training_data")), "## Network and training", "",
         f"{m['layers']} decoder layers × {m['d_model']} wide, {m['heads']} heads, feed-forward "
         f"{m['ff']}; {summary['parameters']:,} parameters. Loss: MSE on the predicted clean "
         f"reaction + {m['velocity_weight']} × frame-difference MSE + {m['bone_weight']} × bone "

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from interplay.motion.clip import default_clips
 from interplay.motion.pair.windows import pair_windows
+from models.common.sources import training_clips
 
 from .config import POSE_DIM
 
@@ -31,7 +31,7 @@ class PairSet:
 def pair_set(split: str, length: int, stride: int, mirror: bool = True, roles: str = "both",
              clips=None, encoder=None) -> PairSet:
     """Every pair window of `split` (train/val/test) from the processed set."""
-    clips = [c for c in (clips or default_clips()) if c.split == split and len(c.people) == 2]
+    clips = [c for c in training_clips(clips=clips) if c.split == split and len(c.people) == 2]
     w = pair_windows(clips, length, stride, roles=roles, mirror=mirror)
     n = len(w)
     prompts = {c.id: c.prompt for c in clips}

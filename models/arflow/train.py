@@ -18,6 +18,7 @@ import torch
 from interplay.motion import skeleton as sk
 from models.common import checkpoint
 from models.common.schedule import Budget, optimizer_step
+from models.common.sources import training_clips, training_data
 
 from .config import ARFlowConfig, TrainConfig
 from .data import PairSet, fit_stats, pair_set, save_stats
@@ -104,11 +105,13 @@ def train(cfg: ARFlowConfig, tc: TrainConfig, out: Path, train_set: PairSet, val
                 checkpoint.save(model, out / "arflow.pt", step=step + 1, val=val)
         if done:
             break
+    train_ids = set(train_set.clip_ids)
     summary = {"steps": step + 1, "seconds": round(budget.elapsed(), 1), "best_val": best,
                "first_loss": first_loss, "last_loss": last_loss, "history": history,
                "train_windows": len(train_set), "val_windows": len(val_set),
                "parameters": sum(p.numel() for p in model.parameters()),
-               "train_config": asdict(tc)}
+               "train_config": asdict(tc),
+               "training_data": training_data(c for c in training_clips() if c.id in train_ids)}
     (out / "train_summary.json").write_text(json.dumps(summary, indent=1))
     return summary
 

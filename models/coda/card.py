@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from models.common.sources import licence_section
+
 _ROWS = ("coda", "coda_short", "coda_noics", "coda_nogdm", "coda_noppl")
 _DESC = {"coda": "CODA (ICS + full CCL), full budget", "coda_short": "CODA, short budget (reference)",
          "coda_noics": "w/o ICS (single codebook)", "coda_nogdm": "w/o GDM (λ_GDM = 0)",
@@ -107,6 +109,7 @@ def write_cards(n: dict, weights: Path) -> None:
         "the pair's canonical frame (first person's pelvis at the XZ origin facing +Z at "
         "frame 0), normalised by one mean/std shared by both people (`normalizer.npz`). Text: "
         "MiniLM (384-d) embedding of the clip prompt.", "",
+        *licence_section(n.get("training_data")),
         "## Sizes", "",
         f"- CVQ-VAE: shared conv encoder φ (width {cvq['width']}, {cvq['depth']} res-blocks per "
         f"stage, ×{cvq['downsample']} temporal downsampling), latent d' = {cvq['latent']}, pose "
@@ -164,4 +167,5 @@ def write_cards(n: dict, weights: Path) -> None:
                 "`../coda/MODEL_CARD.md` (where its numbers are), trained for "
                 f"{n['variants'][name]['cvq_steps']} CVQ steps and "
                 f"{n['variants'][name].get('cmt_steps', 0)} CMT steps (the short ablation "
-                "budget): for the ablation rows of the evaluation, not for serving.\n")
+                "budget): for the ablation rows of the evaluation, not for serving.\n\n"
+                + "\n".join(licence_section(n.get("training_data"))))

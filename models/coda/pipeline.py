@@ -25,6 +25,8 @@ from pathlib import Path
 import numpy as np
 import torch
 
+from models.common.sources import training_clips, training_data
+
 from .card import write_cards
 from .config import CMTConfig, CVQConfig, LossConfig, TrainConfig
 from .data import load_all
@@ -132,6 +134,7 @@ def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), early: bool = Fals
                                          extra={"variant": name, "losses": res["loss_config"]})
     times["export"] = time.perf_counter() - t0
     times["total"] = time.perf_counter() - start
+    train_ids = set(sets["train"].clip_ids)
     numbers = {
         "trained": not early, "scale": scale, "budgets_s": asdict(b),
         "machine": f"{platform.machine()}, {torch.get_num_threads()} torch threads, "
@@ -139,6 +142,8 @@ def run_all(scale: float = 1.0, budgets: Budgets = Budgets(), early: bool = Fals
         "times_s": {k: round(v, 1) for k, v in times.items()},
         "data": {s: {"windows": len(sets[s]), "synthetic": int(sets[s].synthetic.sum()),
                      "clips": len(set(sets[s].clip_ids))} for s in sets},
+        # The sources and licences of the train pairs (the card's licence section).
+        "training_data": training_data(c for c in training_clips() if c.id in train_ids),
         "configs": {"cvq": asdict(CVQ), "cmt": asdict(CMT_CFG), "cvq_train": asdict(VQ_TRAIN),
                     "cmt_train": asdict(CMT_TRAIN)},
         "sampling": sampling, "onnx_roundtrip_max_error": roundtrip, "real": real,

@@ -22,6 +22,7 @@ from interplay.motion.clip import default_clips
 from interplay.motion.features import Normalizer
 from interplay.review.evaluator import EvaluatorRuntime as Runtime
 from models.common import checkpoint, onnx_export
+from models.common.sources import licence_section
 
 from .cli import export_command
 from .config import EvaluatorConfig
@@ -115,6 +116,7 @@ def model_card(ckpt: dict, table: dict, onnx_error: float, params: int, out: Pat
     sizes = ", ".join(f"{f} {(out / f).stat().st_size / 1e6:.1f} MB"
                       for f in ("motion_encoder.onnx", "text_proj.npz"))
     d = ckpt["data"]
+    licence = "\n".join(licence_section(d.get("training_data")))
     chosen = [h for h in ckpt["history"] if h.get("best")]
     best = chosen[-1] if chosen else None
     rows = "\n".join(
@@ -142,7 +144,7 @@ reviewer agent (`interplay.review.evaluator.Evaluator.score`). Runtime: numpy + 
   ({d['frames']} frames at 20 fps). Random windows of {cfg['min_frames'] / 20:g}–{cfg['max_frames'] / 20:g} s
   (shorter clips whole). Text per window: the clip prompt (share {cfg['prompt_share']}) or the
   automatic body caption overlapping it most; mirrored windows get mirrored texts (left ↔
-  right); {d['texts']} distinct texts. Includes HDM05-derived data (CC BY-SA 3.0) and CMU data.
+  right); {d['texts']} distinct texts. Sources and licences: below.
 - Loss: symmetric InfoNCE, temperature {cfg['temperature']}; pairs with the same text or MiniLM
   cosine > {cfg['fn_threshold']} are not negatives. AdamW lr {cfg['lr']}, batch
   {cfg['batch_size']}, feature noise σ {cfg['feature_noise']}, dropout {cfg['dropout']}.
@@ -150,6 +152,7 @@ reviewer agent (`interplay.review.evaluator.Evaluator.score`). Runtime: numpy + 
   torch thread); the checkpoint kept is the best by validation R-precision
   (step {best['step'] if best else '-'}).
 
+{licence}
 ## Retrieval accuracy (through the ONNX runtime)
 R-precision: each motion window (≤ 10 s, every person of every clip of the split) ranks its
 own prompt among 32 texts (its own + 31 of samples with a different prompt), mean ± 95% CI

@@ -20,11 +20,11 @@ import torch
 
 from interplay.eval.metrics import r_precision
 from interplay.eval.testset import split_samples
-from interplay.motion.clip import default_clips
 from interplay.motion.features import Normalizer, encode
 from interplay.text.encoder import get_encoder
 from models.common.contrastive import info_nce
 from models.common.schedule import Budget, optimizer_step, warmup_cosine
+from models.common.sources import training_clips, training_data
 
 from .cli import train_command
 from .config import EvaluatorConfig
@@ -109,7 +109,7 @@ def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
     torch.set_num_threads(cfg.threads)
     rng = np.random.default_rng(cfg.seed)
     start = time.time()
-    clips = default_clips() if clips is None else clips
+    clips = training_clips(clips=clips)      # the processed set unless given; switch applied
 
     table = TextTable()
     raw = build_tracks(clips, table, "train")
@@ -147,7 +147,9 @@ def train(cfg: EvaluatorConfig, clips=None, log=print) -> dict:
             **run,
             "data": {"tracks": len(tracks), "frames": int(sum(len(t.features) for t in tracks)),
                      "texts": len(table.texts),
-                     "clips": sum(c.split == "train" and not c.synthetic for c in clips)}}
+                     "clips": sum(c.split == "train" and not c.synthetic for c in clips),
+                     "training_data": training_data(c for c in clips
+                                                    if c.split == "train" and not c.synthetic)}}
 
 
 def main(argv: list[str] | None = None) -> int:

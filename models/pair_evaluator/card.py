@@ -4,9 +4,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from models.common.sources import licence_section
+
 
 def model_card(ckpt: dict, metrics: dict, params: int, out: Path) -> str:
     cfg, d = ckpt["config"], ckpt["data"]
+    licence = "\n".join(licence_section(d.get("training_data")))
     chosen = [h for h in ckpt["history"] if h.get("best")]
     best = chosen[-1] if chosen else None
     sizes = ", ".join(f"{f} {(out / f).stat().st_size / 1e6:.2f} MB"
@@ -58,6 +61,7 @@ motion. Runtime: `interplay.review.pair_evaluator.PairEvaluator` (numpy + onnxru
   thread); kept: the best validation kind accuracy (step {best['step'] if best else '-'}:
   {best['val_kind_accuracy'] if best else '-'}).
 
+{licence}
 ## Retrieval (through the ONNX runtime)
 Each window (40 frames every 20, both role orders, not mirrored) ranks all {d['texts']}
 training prompts; top-k = a prompt of its own kind is among the best k kinds.

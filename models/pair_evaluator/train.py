@@ -22,9 +22,9 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from interplay.motion.clip import default_clips
 from interplay.text.encoder import get_encoder
 from models.common.contrastive import info_nce
+from models.common.sources import training_clips, training_data
 from models.evaluator.cli import train_command
 from models.evaluator.model import Evaluator
 from models.evaluator.train import fit
@@ -77,7 +77,7 @@ def train(cfg: PairEvaluatorConfig, clips=None, log=print) -> dict:
     torch.set_num_threads(cfg.threads)
     rng = np.random.default_rng(cfg.seed)
     start = time.time()
-    clips = default_clips() if clips is None else clips
+    clips = training_clips(clips=clips)      # the processed set unless given; switch applied
     data, norm = build_set(clips, "train", cfg.window, cfg.stride,
                            max_shift=-(-cfg.shift[1] // cfg.stride))
     val, _ = build_set(clips, "val", cfg.window, cfg.window // 2, mirror=False, normalizer=norm,
@@ -122,7 +122,9 @@ def train(cfg: PairEvaluatorConfig, clips=None, log=print) -> dict:
             "normalizer": {"mean": norm[0], "std": norm[1]}, "kinds": data.kinds,
             "prompts": data.prompts, **run,
             "data": {"windows": len(data), "val_windows": len(val), "texts": len(texts),
-                     "clips": len({c.id for c in clips if c.split == "train" and len(c.people) == 2})}}
+                     "clips": len({c.id for c in clips if c.split == "train" and len(c.people) == 2}),
+                     "training_data": training_data(c for c in clips
+                                                    if c.split == "train" and len(c.people) == 2)}}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from models.common.sources import licence_section
+
 from .config import PARTS
 
 
@@ -110,12 +112,10 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         f"The processed capture set in `models/data/` (train split only; {numbers['data']['tracks']} "
         f"person tracks incl. left/right mirrored train tracks, {numbers['data']['train_frames']} "
         f"train frames at 20 fps; salsa pairs as two single-person tracks; "
-        f"{numbers['data']['texts']} distinct prompts/captions embedded with MiniLM). "
-        "Sources: CMU mocap (\"The data used in this project was obtained from mocap.cs.cmu.edu. "
-        "The database was created with funding from NSF EIA-0196217.\") and HDM05 (CC BY-SA 3.0, "
-        "Müller et al. 2007). **These weights are trained with HDM05-derived data**; treat them "
-        "as derived from CC BY-SA 3.0 material.",
+        f"{numbers['data']['texts']} distinct prompts/captions embedded with MiniLM); its sources "
+        "and what their licences mean for these weights in the next section.",
         "",
+        *licence_section(numbers.get("training_data")),
         "## Model (sizes scaled down from CoMA E.1 to the data and a 2-core CPU)",
         f"- RVQ-VAE: 4 part encoders (CoMA E.2 overlapping parts, input dims from "
         f"`features.part_feature_mask`), conv1d res-blocks width {vq['width']}, depth "
@@ -174,8 +174,9 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         "",
         *_eval_rows(path.parent / "eval.json"),
         "## Limits",
-        "- ~30k train frames (60k with mirroring), 29 distinct prompts and ~200 automatic part "
-        "captions: the transformers learn these families, not open-vocabulary text.",
+        f"- {numbers['data']['train_frames']} train frames (mirrors included) and "
+        f"{numbers['data']['texts']} distinct prompts and automatic part captions: the "
+        "transformers learn these families, not open-vocabulary text.",
         "- Budgets are minutes on a shared 2-core CPU; numbers are from one run (seed 0).",
         "",
     ]
@@ -185,4 +186,4 @@ def write_card(numbers: dict, path: Path, nocs_path: Path) -> None:
         "# SPAM without the geometric/commonsense losses (ablation)\n\n"
         "Same architecture, data and contract as `../spam/`, trained with L1 + commitment only "
         "and smaller transformer budgets; numbers in `../spam/MODEL_CARD.md` and "
-        "`../spam/metrics.json`. Trained with HDM05-derived data (CC BY-SA 3.0).\n")
+        "`../spam/metrics.json`.\n\n" + "\n".join(licence_section(numbers.get("training_data"))))

@@ -17,8 +17,9 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion import skeleton as sk
-from interplay.motion.clip import DATA_DIR, Caption, default_clips
+from interplay.motion.clip import DATA_DIR, Caption
 from interplay.motion.features import Normalizer, encode
+from models.common.sources import excluding_noncommercial, training_clips
 
 from .config import PARTS
 
@@ -118,7 +119,7 @@ def build_tracks(clips) -> list[Track]:
 
 
 def _data_key(data_dir: Path) -> str:
-    h = hashlib.sha1(f"v{CACHE_VERSION}".encode())
+    h = hashlib.sha1(f"v{CACHE_VERSION}{'-commercial' if excluding_noncommercial() else ''}".encode())
     for p in sorted(Path(data_dir).glob("*")):
         if p.suffix in (".npz", ".json"):
             h.update(p.name.encode() + p.read_bytes())
@@ -127,10 +128,11 @@ def _data_key(data_dir: Path) -> str:
 
 def load_tracks(data_dir: str | Path = DATA_DIR, cache_dir: str | Path = CACHE_DIR,
                 clips=None) -> list[Track]:
-    """Tracks of the processed set, from the cache when it matches the data (else built and
-    cached). `clips` (a subset, e.g. for the smoke tests) bypasses the cache."""
+    """Tracks of the processed set (its training clips: `models.common.sources`), from the
+    cache when it matches the data (else built and cached). `clips` (a subset, e.g. for the
+    smoke tests) bypasses the cache; the non-commercial switch applies to it too."""
     if clips is not None:
-        return build_tracks(clips)
+        return build_tracks(training_clips(clips=clips))
     cache = Path(cache_dir) / f"tracks-{_data_key(Path(data_dir))}"
     if (cache / "tracks.json").exists():
         meta = json.loads((cache / "tracks.json").read_text())
@@ -139,7 +141,7 @@ def load_tracks(data_dir: str | Path = DATA_DIR, cache_dir: str | Path = CACHE_D
         return [Track(feats[m["start"]:m["start"] + m["frames"]], offsets[i], m["prompt"],
                       [Caption(**c) for c in m["captions"]], m["split"], m["clip_id"],
                       m["mirrored"], m["licence"]) for i, m in enumerate(meta)]
-    tracks = build_tracks(default_clips(str(data_dir)))
+    tracks = build_tracks(training_clips(data_dir))
     cache.mkdir(parents=True, exist_ok=True)
     starts = np.cumsum([0] + [len(t.features) for t in tracks])
     np.savez(cache / "features.npz", features=np.concatenate([t.features for t in tracks]),

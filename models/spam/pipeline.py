@@ -26,6 +26,7 @@ from pathlib import Path
 import torch
 
 from models.common.schedule import History
+from models.common.sources import training_clips, training_data
 
 from . import checkpoint
 from .card import write_card
@@ -185,6 +186,8 @@ def finish(results: dict, tracks, normalizer, bank, times: dict, budgets: Budget
                  "texts": len(bank.row)},
         "configs": {"vq": asdict(VQ), "transformer": asdict(TRANSFORMER),
                     "vq_train": asdict(VQ_TRAIN), "transformer_train": asdict(TR_TRAIN)},
+        # The sources and licences the tracks came from (the card's licence section).
+        "training_data": training_data(training_clips()),
     }
     if note:
         numbers["note"] = note
