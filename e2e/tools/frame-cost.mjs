@@ -48,6 +48,8 @@ for (let r = 0; r < repeat; r++) {
   for (const v of variants) {
     await page.goto(`${base}/m/${motion}${v}`);
     await page.waitForFunction(() => window.__interplay?.phase === "done" && window.__interplay.renderCount > 0);
+    // the skinned character comes after the motion (its rig, the mesh): measure it, not the mannequin
+    if (/[?&]figure=character/.test(v)) await page.waitForFunction(() => window.__interplay.figure?.shown === "character");
     if (css) await page.addStyleTag({ content: css });
     await page.waitForTimeout(1000);
     const c0 = chromiumCpu(process.pid, threads);

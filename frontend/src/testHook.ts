@@ -1,6 +1,7 @@
 // `window.__interplay`: a tiny read-only view of the studio for the end-to-end tests.
 import { FPS, frames, renderStats, sceneProbe, useStudio } from "./store";
 import { useLibrary } from "./library";
+import { figureStats, useFigure } from "./figure";
 
 export interface BvhSummary {
   bones: number;
@@ -38,6 +39,9 @@ export interface InterplayTestHook {
   readonly library: string[];
   /** Joints ([x, y, z] × 22) of person p at frame t of the buffer, or null. */
   frameJoints(person: number, frame: number): number[][] | null;
+  /** The figure chosen (mannequin / character), its status, what is drawn and how many
+   * characters are made. */
+  readonly figure: { figure: string; status: string; shown: string; characters: number };
   /** Screen position (client px) of joint j of person p at the frame shown, or null. */
   project(person: number, joint: number): [number, number] | null;
   /** Screen position (client px) of a world point, or null before the viewport exists. */
@@ -131,6 +135,10 @@ export function installTestHook(target: Window = window): void {
       const out: number[][] = [];
       for (let j = 0; j < f.length / 3; j++) out.push([f[3 * j], f[3 * j + 1], f[3 * j + 2]]);
       return out;
+    },
+    get figure() {
+      const { figure, status } = useFigure.getState();
+      return { figure, status, shown: figureStats.shown, characters: figureStats.characters };
     },
     project(person, joint) {
       const t = useStudio.getState().frame;

@@ -60,7 +60,7 @@ export class Mannequin {
   /** `quality`: tessellation, and shadows: cast them for the renderer's shadow map, or draw blob
    * shadows on the floor. Bones take their length from each pose. */
   constructor(
-    skeleton: Skeleton,
+    readonly skeleton: Skeleton,
     readonly person: number,
     quality: QualitySettings = QUALITY.full,
   ) {
@@ -120,8 +120,23 @@ export class Mannequin {
     return out.set(f[3 * j], f[3 * j + 1], f[3 * j + 2]);
   }
 
+  /** Whether the body is drawn; hidden (the skinned character stands in), a pose only places
+   * the blob shadows. */
+  get bodyVisible(): boolean {
+    return this.body.mesh.visible;
+  }
+
+  set bodyVisible(on: boolean) {
+    this.body.mesh.visible = on;
+  }
+
   /** Pose the mannequin: `joints` is one frame (66 floats); sets highlight colours. No allocation. */
   setPose(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
+    if (this.bodyVisible) this.placeBody(joints, contacts, penetrating);
+    this.placeBlobs(joints);
+  }
+
+  private placeBody(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
     const { a, b, q, s, body } = this;
     for (let i = 0; i < this.bonePairs.length; i++) {
       const [child, parent] = this.bonePairs[i];
@@ -145,6 +160,9 @@ export class Mannequin {
     }
     body.posed();
     this.posed = true;
+  }
+
+  private placeBlobs(joints: Float32Array): void {
     for (const { joint, mesh, mat } of this.blobs) {
       const y = joints[3 * joint + 1];
       mesh.position.set(joints[3 * joint], 0.003, joints[3 * joint + 2]);

@@ -1,9 +1,13 @@
 // The three.js stage: renderer, soft lights with shadows, ground grid, orbit camera and the
-// mannequins of the current motion. Renders on demand (when something changed).
+// people of the current motion — mannequins, or the skinned characters (Character.ts) once the
+// motion's rig is there. Renders on demand (when something changed).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Skeleton } from "../api/types";
 import type { FrameBuffer } from "../playback/frameBuffer";
+import type { MotionRig } from "../playback/rig";
+import type { CharacterMaker } from "../figure";
+import type { Character } from "./Character";
 import { contactJoints, penetratingBones } from "./colours";
 import { Ground } from "./Ground";
 import { FLOOR_COLOUR, LineGround } from "./LineGround";
@@ -41,6 +45,12 @@ export class Stage {
   private readonly ground: Ground | LineGround;
   private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
+  /** Skinned characters, made on the first pose that has the maker and a rig of the motion on
+   * stage; they stand in for the mannequins' bodies (the blob shadows stay the mannequins'). */
+  private characters: Character[] = [];
+  private figure: { make: CharacterMaker | null; rig: MotionRig | null } = { make: null, rig: null };
+  /** What the last pose drew: the mannequins or the characters. */
+  shown: "mannequin" | "character" = "mannequin";
   /** Per person: the joints of a pose blended between two frames (reused, no allocation). */
   private readonly blended: Float32Array[] = [];
   private highlights: { frame: number; version: number; buffer: FrameBuffer | null; sets: [Set<number>, Set<number>][] } =
@@ -173,10 +183,50 @@ export class Stage {
   }
 
   clearPeople(): void {
+    this.clearCharacters();
     if (!this.mannequins.length) return;
     this.mannequins.forEach((m) => m.dispose());
     this.mannequins = [];
     this.dirty = true;
+  }
+
+  private clearCharacters(): void {
+    this.characters.forEach((c) => c.dispose());
+    this.characters = [];
+    this.shown = "mannequin";
+  }
+
+  /** The character to draw instead of the mannequin: its maker and the rig of the motion on
+   * stage (nulls: the mannequin). The people are drawn as characters while the rig matches the
+   * buffer (its people and frames). True when this changed (pose again). */
+  setFigure(make: CharacterMaker | null, rig: MotionRig | null): boolean {
+    if (make === this.figure.make && rig === this.figure.rig) return false;
+    this.clearCharacters();
+    this.figure = { make, rig };
+    this.dirty = true;
+    return true;
+  }
+
+  /** The figure's rig when it is this buffer's motion, else null. */
+  private rigOf(buffer: FrameBuffer): MotionRig | null {
+    const { make, rig } = this.figure;
+    if (!make || !rig || rig.people.length !== buffer.persons || rig.frames !== buffer.received || !this.mannequins.length) return null;
+    if (!this.characters.length) {
+      this.characters = rig.people.map((person, p) => {
+        const c = make(this.mannequins[p].skeleton, p, person.offsets, this.settings);
+        c.selected = this.mannequins[p].selected;
+        c.hovered = this.mannequins[p].hovered;
+        c.group.visible = !this.debug.hide.has("people");
+        this.scene.add(c.group);
+        return c;
+      });
+    }
+    return rig;
+  }
+
+  /** How many characters are made (for the test hook). */
+  get characterCount(): number {
+    return this.characters.length;
   }
 
   get people(): number {
@@ -185,6 +235,7 @@ export class Stage {
 
   /** Meshes of every mannequin that a pointer ray can pick. */
   get pickable(): THREE.Object3D[] {
+    if (this.shown === "character") return this.characters.flatMap((c) => c.pickable);
     return this.mannequins.flatMap((m) => m.pickable);
   }
 
@@ -193,6 +244,10 @@ export class Stage {
     this.mannequins.forEach((m, p) => {
       m.selected = selected[p] ?? new Set();
       m.hovered = hovered[p] ?? new Set();
+    });
+    this.characters.forEach((c, p) => {
+      c.selected = this.mannequins[p]?.selected ?? new Set();
+      c.hovered = this.mannequins[p]?.hovered ?? new Set();
     });
   }
 
@@ -262,6 +317,8 @@ export class Stage {
   /** Pose every mannequin at frame t of the buffer — blended by `weight` towards frame `next`
    * (playback between samples; highlights are frame t's) — and follow them with the camera. */
   pose(skeleton: Skeleton, buffer: FrameBuffer, t: number, next = t, weight = 0): void {
+    const rig = this.rigOf(buffer);
+    this.shown = rig ? "character" : "mannequin";
     this.mannequins.forEach((m, p) => {
       if (this.debug.hide.has("poses") && m.posed) return; // profiling: no vertex uploads
       let joints = buffer.frame(p, t);
@@ -271,8 +328,13 @@ export class Stage {
         for (let i = 0; i < joints.length; i++) out[i] = joints[i] + (b[i] - joints[i]) * weight;
         joints = out;
       }
-      m.setPose(joints, ...this.highlightsAt(skeleton, buffer, t, p));
+      const [contacts, penetrating] = this.highlightsAt(skeleton, buffer, t, p);
+      // a character stands in: the mannequin only places its blob shadows
+      m.bodyVisible = !rig;
+      m.setPose(joints, contacts, penetrating);
+      if (rig) this.characters[p].setPose(rig.people[p], t, next, weight, contacts, penetrating);
     });
+    this.characters.forEach((c) => (c.group.visible = rig !== null && !this.debug.hide.has("people")));
     this.follow(buffer, t, next, weight);
     this.dirty = true;
   }

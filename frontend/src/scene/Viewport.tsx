@@ -14,6 +14,7 @@ import { detectQuality, QUALITY } from "./quality";
 import { debugFlags } from "./debugFlags";
 import { LIGHT_RESOLUTION, ResolutionController } from "./resolution";
 import { Stage } from "./Stage";
+import { figureData, figureStats, useFigure, watchFigure } from "../figure";
 
 export function Viewport() {
   const canvasRef = useRef<HTMLCanvasElement>(null);
@@ -71,6 +72,10 @@ export function Viewport() {
           drawn = { pos: -1, version: -1 };
         }
       }
+      // the skinned character, once the motion on stage is stored and its rig has come
+      const rig = useFigure.getState().figure === "character" && s.stream.phase === "done" &&
+        figureData.rig?.motionId === s.motionId ? figureData.rig : null;
+      if (stage.setFigure(rig && figureData.make, rig)) drawn = { pos: -1, version: -1 };
       stage.controls.enabled = s.tool !== "path";
       // drawing: the floor must stay put under the pointer (no following the people)
       stage.followPaused = s.tool === "path";
@@ -121,9 +126,13 @@ export function Viewport() {
         if (scale !== null) renderStats.scale = stage.renderScale = scale;
       }
       drewLast = drew;
+      figureStats.shown = stage.shown;
+      figureStats.characters = stage.characterCount;
     };
     raf = requestAnimationFrame(tick);
+    const unwatchFigure = watchFigure();
     return () => {
+      unwatchFigure();
       cancelAnimationFrame(raf);
       detach();
       sceneProbe.project = sceneProbe.ground = null;

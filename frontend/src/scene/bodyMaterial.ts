@@ -25,6 +25,7 @@ const vertexShader = /* glsl */ `
   uniform vec3 uFill;
   uniform vec3 uFillDir;
   varying vec3 vColour;
+  #include <skinning_pars_vertex>
 
   // three's ACES filmic fit (tonemapping_pars_fragment), exposure 1
   vec3 rrtOdt(vec3 v) {
@@ -44,14 +45,21 @@ const vertexShader = /* glsl */ `
   }
 
   void main() {
+    // a skinned mesh (the character, Character.ts) is skinned here as three's own materials do;
+    // the chunks are empty for the mannequin (no USE_SKINNING)
+    vec3 objectNormal = normal;
+    vec3 transformed = position;
+    #include <skinbase_vertex>
+    #include <skinnormal_vertex>
+    #include <skinning_vertex>
     // the mesh is never scaled: world normals are the model matrix's rotation of the normals
-    vec3 n = normalize(mat3(modelMatrix) * normal);
+    vec3 n = normalize(mat3(modelMatrix) * objectNormal);
     vec3 irradiance = mix(uGround, uSky, 0.5 * n.y + 0.5)
       + max(dot(n, uSunDir), 0.0) * uSun + max(dot(n, uFillDir), 0.0) * uFill;
     vec3 albedo = color;
     vec3 radiance = albedo * 0.95 * irradiance * 0.3183099 + albedo * glow;
     vColour = srgb(aces(radiance));
-    gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+    gl_Position = projectionMatrix * modelViewMatrix * vec4(transformed, 1.0);
   }
 `;
 

@@ -4,7 +4,8 @@
 // quality's pixel ratio (and fixes it: no dynamic resolution), `?dynres=0` turns the light
 // quality's dynamic resolution off, `?alpha=1` asks for a canvas with an alpha channel, `?tess=8x6,8,6x4,6` sets the body's tessellation (sphere,
 // cylinder sides, thin pieces' sphere and sides; `?tess=old` the light quality's before the
-// thin-piece shapes and welding). Nothing in the studio sets them; the perf notes in
+// thin-piece shapes and welding), `?detail=full|light` the skinned character's mesh (light
+// quality's default: light, lightBody.ts). Nothing in the studio sets them; the perf notes in
 // docs/studio.md do.
 
 export interface DebugFlags {
@@ -14,6 +15,8 @@ export interface DebugFlags {
   alpha: boolean;
   /** Body tessellation override: "old", or [sphere w, h, cylinder sides, thin sphere w, h, thin sides]. */
   tess: "old" | number[] | null;
+  /** The character's mesh: the full one or the light level of detail (null: by quality). */
+  detail: "full" | "light" | null;
 }
 
 export function debugFlags(search: string = typeof window === "undefined" ? "" : window.location.search): DebugFlags {
@@ -24,5 +27,7 @@ export function debugFlags(search: string = typeof window === "undefined" ? "" :
   const t = q.get("tess");
   const nums = (t ?? "").split(/[x,]/).map(Number);
   const tess = t === "old" ? "old" : nums.length === 6 && nums.every((n) => Number.isInteger(n) && n >= 2 && n <= 64) ? nums : null;
-  return { hide, pixelRatio, dynamicResolution: pixelRatio === null && q.get("dynres") !== "0", alpha: q.get("alpha") === "1", tess };
+  const d = q.get("detail");
+  const detail = d === "full" || d === "light" ? d : null;
+  return { hide, pixelRatio, dynamicResolution: pixelRatio === null && q.get("dynres") !== "0", alpha: q.get("alpha") === "1", tess, detail };
 }

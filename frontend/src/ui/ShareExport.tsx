@@ -3,7 +3,8 @@ import { exportUrl, shareUrl } from "../api/client";
 import { useStudio } from "../store";
 import { personName } from "./format";
 
-/** Share link (copied to the clipboard and shown) and downloads: BVH per person, JSON. */
+/** Share link (copied to the clipboard and shown) and downloads: BVH per person, JSON, GLB
+ * (everyone in one file). */
 export function ShareExport() {
   const motionId = useStudio((s) => s.motionId);
   const persons = useStudio((s) => s.motionPersons);
@@ -69,6 +70,17 @@ export function ShareExport() {
           download
         >
           JSON
+        </a>
+        <a
+          className={`button${ready ? "" : " disabled"}`}
+          data-testid="export-glb"
+          href={ready && motionId ? exportUrl(motionId, "glb") : undefined}
+          aria-disabled={!ready}
+          aria-label="Download GLB"
+          title="glTF binary: a skinned character per person and one animation for everyone (Blender, Unity, Unreal, three.js)"
+          download
+        >
+          GLB
         </a>
       </div>
       {link && (

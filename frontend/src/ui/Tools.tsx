@@ -1,6 +1,7 @@
 import { useEffect, useRef } from "react";
 import { pathLength } from "../directing/path";
 import { pointer, useStudio, type Tool } from "../store";
+import { FigureToggle } from "./FigureToggle";
 
 const TOOLS: { tool: Tool; label: string; hint: string }[] = [
   { tool: "path", label: "✎ Draw path", hint: "Drag on the floor to draw a path for a person to follow" },
@@ -70,6 +71,7 @@ export function Tools() {
         </>
       )}
       {tool !== "view" && <span className="tools__hint small">{TOOLS.find((t) => t.tool === tool)?.hint}</span>}
+      <FigureToggle />
     </div>
   );
 }

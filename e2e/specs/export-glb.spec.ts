@@ -1,0 +1,56 @@
+// "GLB" in Share & export downloads the motion as binary glTF 2.0 (GET
+// /api/motions/{id}/export?format=glb): one file for everyone, a skinned character and a skin
+// per person, one animation. Checked from the downloaded bytes: the glTF magic, version 2, the
+// length in the header, and the JSON chunk's skins, meshes and animation.
+import { expect, test, type APIRequestContext } from "@playwright/test";
+import { readFileSync } from "node:fs";
+import { openStudio, shot } from "./studio";
+
+/** Make a motion through the API (POST a job, poll until it is stored); returns its id. */
+async function makeMotion(request: APIRequestContext, prompt: string, persons: 1 | 2, seconds: number): Promise<string> {
+  const res = await request.post("/api/jobs", { data: { prompt, persons, seconds } });
+  expect(res.status()).toBe(201);
+  const { motion_id } = await res.json();
+  await expect
+    .poll(async () => (await request.get(`/api/motions/${motion_id}`)).status(), { timeout: 120_000 })
+    .toBe(200);
+  return motion_id as string;
+}
+
+/** The header and JSON chunk of a GLB. */
+function readGlb(bytes: Buffer): { magic: string; version: number; length: number; json: { skins: unknown[]; meshes?: unknown[]; animations: { channels: unknown[] }[]; nodes: { name?: string }[] } } {
+  const magic = bytes.subarray(0, 4).toString("latin1");
+  const version = bytes.readUInt32LE(4);
+  const length = bytes.readUInt32LE(8);
+  const chunk = bytes.readUInt32LE(12);
+  expect(bytes.subarray(16, 20).toString("latin1")).toBe("JSON");
+  return { magic, version, length, json: JSON.parse(bytes.subarray(20, 20 + chunk).toString("utf8")) };
+}
+
+for (const persons of [1, 2] as const) {
+  test(`"GLB" downloads a binary glTF of the motion (${persons} ${persons === 1 ? "person" : "people"})`, async ({ page, request }, info) => {
+    const id = await makeMotion(request, persons === 1 ? "a person jumps" : "two people dance salsa", persons, 2);
+    await openStudio(page, `/m/${id}`);
+    await page.waitForFunction(() => window.__interplay.phase === "done");
+    const button = page.getByRole("link", { name: "Download GLB" });
+    await expect(button).toHaveAttribute("href", new RegExp(`/api/motions/${id}/export\\?format=glb$`));
+
+    const download = page.waitForEvent("download");
+    await button.click();
+    const file = await download;
+    expect(file.suggestedFilename()).toBe(`interplay-${id}.glb`);
+    const bytes = readFileSync((await file.path())!);
+    const glb = readGlb(bytes);
+    expect(glb.magic).toBe("glTF");
+    expect(glb.version).toBe(2);
+    expect(glb.length).toBe(bytes.length);
+    expect(glb.json.skins).toHaveLength(persons);
+    expect(glb.json.meshes).toHaveLength(persons); // a skinned body each
+    expect(glb.json.animations).toHaveLength(1); // one clip for everyone
+    // per person: the pelvis's translation and the 22 joints' rotations
+    expect(glb.json.animations[0].channels).toHaveLength(persons * 23);
+    const names = glb.json.nodes.map((n) => n.name);
+    for (let p = 0; p < persons; p++) expect(names).toContain(`person${p}_body`);
+    await shot(page, `export-glb-${persons}`, info);
+  });
+}
