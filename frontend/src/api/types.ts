@@ -198,4 +198,4 @@ export type StreamEvent =
   | { type: "done"; motion_id: string; frames: number }
   | { type: "error"; message: string; stage?: string; cancelled?: boolean };
 
-export type ExportFormat = "bvh" | "json";
+export type ExportFormat = "bvh" | "glb" | "json";
