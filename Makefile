@@ -11,12 +11,12 @@ FRONT_SRC := $(shell find frontend/src frontend/public frontend/index.html front
 HOST ?= 127.0.0.1
 PORT ?= 8000
 
-.PHONY: run test install lint test-py test-front test-e2e frontend data train train-deps train-smoke chromium clean
+.PHONY: run test install lint test-py test-front test-e2e frontend data train train-deps train-smoke chromium postgres clean
 
 run: install frontend/dist/index.html
 	$(BIN)/interplay serve --host $(HOST) --port $(PORT)
 
-test: install train-deps frontend/dist/index.html chromium
+test: install train-deps frontend/dist/index.html chromium postgres
 	$(MAKE) lint
 	$(MAKE) test-py test-front test-e2e
 
@@ -24,7 +24,7 @@ install: $(PY_STAMP) $(NPM_STAMP)
 
 $(PY_STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev]'
+	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev,postgres]'
 	rm -f $(VENV)/.installed-* && touch $@
 
 $(NPM_STAMP): package.json package-lock.json frontend/package.json e2e/package.json
@@ -38,6 +38,11 @@ frontend/dist/index.html: $(NPM_STAMP) $(FRONT_SRC)
 chromium:
 	@command -v chromium >/dev/null || { apt-get update -qq && apt-get install -y -qq chromium >/dev/null; }
 
+# Debian's PostgreSQL for the store, API and scale-out tests: installed when missing; the
+# tests start (and stop) their own throw-away cluster with scripts/postgres.sh.
+postgres:
+	@sh scripts/postgres.sh install
+
 # Static checks, run first by `make test`: ruff and mypy (configured in pyproject.toml) on the
 # Python code, tsc on the front end.
 lint: install
@@ -45,8 +50,9 @@ lint: install
 	$(BIN)/mypy
 	npm run typecheck --workspace frontend
 
+# INTERPLAY_REQUIRE_POSTGRES: the PostgreSQL tests fail, not skip, without a cluster.
 test-py:
-	$(BIN)/python -m pytest -q
+	INTERPLAY_REQUIRE_POSTGRES=1 $(BIN)/python -m pytest -q
 
 test-front:
 	npm test --workspace frontend
@@ -59,7 +65,7 @@ TRAIN_STAMP := $(VENV)/.train-installed-$(shell cat pyproject.toml | md5sum | cu
 train-deps: $(TRAIN_STAMP)
 
 $(TRAIN_STAMP): $(PY_STAMP)
-	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev,train]'
+	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev,postgres,train]'
 	rm -f $(VENV)/.train-installed-* && touch $@
 
 # Retrain every model from models/data, every source (single-person models ≤ 60 min on 2

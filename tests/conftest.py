@@ -1,6 +1,7 @@
 import pytest
 
 from interplay.motion.clip import save_clips
+from tests.helpers.postgres import pg_cluster, pg_url  # noqa: F401  (fixtures: a real PostgreSQL)
 from tests.helpers.synthetic_motion import stand_in_clips
 
 

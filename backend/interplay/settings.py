@@ -15,12 +15,18 @@
                              http://localhost:11434/v1); with INTERPLAY_LLM_MODEL set the planner
                              asks it and falls back to the embedded planner on any failure
     INTERPLAY_LLM_MODEL / _API_KEY / _TIMEOUT_S   its model name, bearer key, timeout (20 s)
+    INTERPLAY_JOB_QUEUE      auto (default) | embedded | procrastinate: who runs jobs
+    INTERPLAY_DRAIN_S        on SIGTERM, seconds running jobs may finish before they fail (5)
+    INTERPLAY_JOB_STALE_S    a job whose worker is silent this long is failed (30)
+    INTERPLAY_GENERATOR_FACTORY  "module:callable" building the generator (tests; default: models)
+    INTERPLAY_RETENTION_MAX_MOTIONS / _MAX_AGE_S  retention, off by default
 """
 
 from __future__ import annotations
 
 from functools import lru_cache
 from pathlib import Path
+from typing import Literal
 
 from pydantic import AliasChoices, Field, SecretStr
 from pydantic_settings import BaseSettings, SettingsConfigDict
@@ -43,10 +49,28 @@ class Settings(BaseSettings):
     job_workers: int = Field(default=1, ge=1, le=16)
     max_pending_jobs: int = Field(default=16, ge=1)   # beyond this POST /api/jobs answers 429
     job_retention_s: float = 900.0                    # finished jobs stay streamable this long
+    # Durable jobs (docs/api.md "Jobs"): which queue runs them (auto: procrastinate when
+    # DATABASE_URL is PostgreSQL, else worker threads in the API process), how long SIGTERM
+    # lets running jobs finish, when a silent worker's job counts as orphaned, and an optional
+    # "module:callable" that builds the generator instead of loading the models (tests).
+    job_queue: Literal["auto", "embedded", "procrastinate"] = "auto"
+    drain_s: float = Field(default=5.0, ge=0, le=600)
+    job_stale_s: float = Field(default=30.0, gt=0)
+    generator_factory: str | None = None
+    # Retention (off by default): keep at most this many motions / motions this young.
+    retention_max_motions: int | None = Field(default=None, ge=1)
+    retention_max_age_s: float | None = Field(default=None, gt=0)
     llm_base_url: str | None = None                   # planner LLM (OpenAI-compatible), optional
     llm_model: str | None = None
     llm_api_key: SecretStr | None = None
     llm_timeout_s: float = Field(default=20.0, gt=0, le=600)
+
+    @property
+    def queue(self) -> str:
+        """The job queue in use: "procrastinate" or "embedded"."""
+        if self.job_queue != "auto":
+            return self.job_queue
+        return "procrastinate" if self.db_url.startswith("postgresql") else "embedded"
 
     @property
     def db_url(self) -> str:

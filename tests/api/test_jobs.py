@@ -128,7 +128,7 @@ def _wait_finished(client, job_id: str, timeout: float = 30.0) -> str:
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         status = client.get(f"/api/jobs/{job_id}").json()["status"]
-        if status in ("done", "failed"):
+        if status in ("done", "failed", "cancelled"):
             return status
         time.sleep(0.02)
     raise AssertionError("job did not finish")
@@ -156,8 +156,11 @@ def test_failed_generation_sends_error_and_stores_nothing(settings):
         assert [e["type"] for e in events if e["type"] != "segment"][:2] == ["plan", "frames"]
         assert events[-1]["type"] == "error" and "broke on purpose" in events[-1]["message"]
         assert events[-1]["stage"] == "generate"
-        assert client.get(f"/api/jobs/{job['job_id']}").json()["status"] == "failed"
-        assert client.get(f"/api/motions/{job['motion_id']}").status_code == 404
+        status = client.get(f"/api/jobs/{job['job_id']}").json()
+        assert status["status"] == "failed" and "broke on purpose" in status["reason"]
+        # The motion id says its job failed, and why (not the 404 of "not done yet").
+        r = client.get(f"/api/motions/{job['motion_id']}")
+        assert r.status_code == 409 and "broke on purpose" in r.json()["detail"], r.text
 
 
 @pytest.mark.parametrize("job_id", ["unknownjobidunknownjob", "x", "a" * 200])

@@ -124,11 +124,12 @@ def test_delete_cancels_a_running_job(settings):
                 events.append(ws.receive_json())
         assert events[-1] == {"type": "error", "message": "cancelled", "cancelled": True}
         for _ in range(100):
-            if client.get(f"/api/jobs/{job['job_id']}").json()["status"] == "failed":
+            if client.get(f"/api/jobs/{job['job_id']}").json()["status"] == "cancelled":
                 break
             time.sleep(0.05)
-        assert client.get(f"/api/jobs/{job['job_id']}").json()["status"] == "failed"
-        assert client.get(f"/api/motions/{job['motion_id']}").status_code == 404
+        assert client.get(f"/api/jobs/{job['job_id']}").json()["status"] == "cancelled"
+        r = client.get(f"/api/motions/{job['motion_id']}")
+        assert r.status_code == 409 and "cancelled" in r.json()["detail"]
 
 
 def test_delete_unknown_job_is_404(fake_client):

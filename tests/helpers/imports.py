@@ -34,8 +34,9 @@ ALLOWED: dict[str, set[str]] = {
     "bench": BASE | {"motion", "text", "pipeline", "api"} | STAGES,
     "cli": BASE | {"motion", "text", "store", "pipeline", "data", "eval", "bench"} | STAGES,
 }
-# The one door from the CLI into the web layer: `interplay serve` builds the app.
-EXCEPTIONS = {("interplay.cli.serve", "api")}
+# The doors from the CLI into the web layer: `interplay serve` builds the app, `interplay
+# worker` runs the app's job runners from the PostgreSQL queue.
+EXCEPTIONS = {("interplay.cli.serve", "api"), ("interplay.cli.worker", "api")}
 # Within generators: retrieval stands alone (SPAM and CODA may build on it, never the reverse).
 FORBIDDEN_WITHIN = [("interplay.generators.retrieval", ("interplay.generators.spam",
                                                         "interplay.generators.coda"))]

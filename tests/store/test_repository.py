@@ -1,5 +1,6 @@
-"""The motion store on real capture data: exact round trip of joints, ids, listing, versions,
-input checks, and reopening the same SQLite file from a second engine (a server restart)."""
+"""The motion store on real capture data, on SQLite and on a real PostgreSQL: exact round trip
+of joints, ids, listing, versions, input checks, and reopening the same database from a second
+engine (a server restart)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import numpy as np
 import pytest
 
 from interplay.motion.clip import DATA_DIR, default_clips
-from interplay.settings import get_settings
+from interplay.settings import Settings, get_settings
 from interplay.store import MotionRepository, make_engine, valid_id
 
 
@@ -23,8 +24,11 @@ def salsa():
     return two, one
 
 
-@pytest.fixture
-def url(tmp_path):
+@pytest.fixture(params=["sqlite", "postgres"])
+def url(request, tmp_path):
+    """A SQLite file in a folder not made yet, or an empty database on a real PostgreSQL."""
+    if request.param == "postgres":
+        return Settings(database_url=request.getfixturevalue("pg_url")).db_url
     return f"sqlite:///{tmp_path / 'nested' / 'interplay.db'}"
 
 

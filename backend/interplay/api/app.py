@@ -1,7 +1,7 @@
 """The FastAPI application: `create_app(settings=None, generator=None)`.
 
 The lifespan opens the database (tables created if missing), loads the generator once (or takes
-the one given, for tests) and starts the job pool. Every error is a 4xx JSON
+the one given, for tests) and starts the durable job queue (`api/jobs.py`). Every error is a 4xx JSON
 `{"detail": "<readable message>"}`."""
 
 from __future__ import annotations
@@ -17,7 +17,8 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from interplay import __version__
 from interplay.api import stream
-from interplay.api.jobs import JobManager
+from interplay.api.queue.factory import retention_of
+from interplay.api.queue.setup import open_jobs
 from interplay.api.routes import edits, jobs, library, motions, pages, rerun
 from interplay.generators.base import Generator
 from interplay.pipeline.requests import readable_errors
@@ -28,8 +29,8 @@ log = logging.getLogger(__name__)
 
 
 def _load_generator(settings: Settings) -> Generator:
-    from interplay.generators.router import load_generator
-    return load_generator(settings)
+    from interplay.api.queue.factory import build_generator
+    return build_generator(settings)
 
 
 def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
@@ -38,21 +39,21 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
     @asynccontextmanager
     async def lifespan(app: FastAPI):
         engine = make_engine(settings.db_url)
-        app.state.repo = MotionRepository(engine)
+        app.state.repo = MotionRepository(engine, retention_of(settings))
         app.state.generator, app.state.generator_error = generator, None
-        if generator is None:
+        # With procrastinate (PostgreSQL) `interplay worker` processes load the generator.
+        if generator is None and settings.queue == "embedded":
             try:  # ONNX sessions take a moment to build: off the event loop
                 app.state.generator = await anyio.to_thread.run_sync(_load_generator, settings)
             except Exception as exc:  # serve stored motions anyway; POST /api/jobs answers 503
                 log.exception("could not load the generator")
                 app.state.generator_error = f"{type(exc).__name__}: {exc}"
-        app.state.jobs = JobManager(app.state.repo, workers=settings.job_workers,
-                                    max_pending=settings.max_pending_jobs,
-                                    retention_s=settings.job_retention_s)
+        # Durable jobs: orphans of a dead process are ended (or taken over) before serving.
+        app.state.jobs = await open_jobs(settings, app.state.repo, app.state.generator)
         try:
             yield
         finally:
-            app.state.jobs.shutdown()
+            app.state.jobs.close()
             engine.dispose()
 
     app = FastAPI(title="Interplay", version=__version__, lifespan=lifespan,

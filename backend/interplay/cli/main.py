@@ -1,4 +1,4 @@
-"""The `interplay` command: serve, generate, plan, edit, react, metrics, export, bench, eval,
+"""The `interplay` command: serve, worker, generate, plan, edit, react, metrics, export, bench, eval,
 eval-react, review-eval, eval-pair, data build; one module per command group registers its
 subcommands here.
 
@@ -9,10 +9,10 @@ from __future__ import annotations
 import argparse
 import sys
 
-from interplay.cli import bench, data, eval_pair, evals, files, generate, react, serve
+from interplay.cli import bench, data, eval_pair, evals, files, generate, react, serve, worker
 from interplay.cli.args import CliError
 
-GROUPS = (serve, generate, react, files, bench, evals, eval_pair, data)
+GROUPS = (serve, worker, generate, react, files, bench, evals, eval_pair, data)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -61,11 +61,12 @@ def follow_path(people: list[np.ndarray], trajectory: dict) -> list[np.ndarray]:
 
 def edit_stored(repo: MotionRepository, generator, parent: StoredMotion, part: str | None,
                 prompt: str | None, frames: list[int] | None, seed: int | None,
-                trajectory: dict | None = None, client_id: str | None = None) -> StoredMotion:
+                trajectory: dict | None = None, id: str | None = None,
+                client_id: str | None = None) -> StoredMotion:
     """Edit a stored motion (a part/frames from `prompt`, then a path if `trajectory`) and
-    store the result as a new motion whose parent is `parent`, with `edit` saying what made
-    it ({part, prompt, frames, trajectory}), listed as made by `client_id` (a browser's "My
-    motions") when given."""
+    store the result as a new motion (under `id` when given: an edit job hands it out) whose
+    parent is `parent`, with `edit` saying what made it ({part, prompt, frames, trajectory}),
+    listed as made by `client_id` (a browser's "My motions") when given."""
     if prompt is None and trajectory is None:
         raise ValueError("an edit needs a prompt, a trajectory or both")
     people = [np.asarray(p, np.float32) for p in parent.people]
@@ -85,4 +86,4 @@ def edit_stored(repo: MotionRepository, generator, parent: StoredMotion, part: s
             "trajectory": trajectory}
     return repo.create(prompt=parent.prompt, people=people, seconds=len(people[0]) / parent.fps,
                        seed=seed_out, plan=plain(plan), metrics=metrics, highlights=highlights,
-                       parent_id=parent.id, edit=plain(edit), client_id=client_id)
+                       parent_id=parent.id, edit=plain(edit), id=id, client_id=client_id)

@@ -1,5 +1,6 @@
 """Create, get and list stored motions. Rows become plain `StoredMotion` values (numpy joints),
-so callers never hold a session or a detached ORM object."""
+so callers never hold a session or a detached ORM object. With a retention policy
+(`store.retention`) every create also deletes what the policy no longer keeps."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from sqlalchemy.orm import Session, load_only
 
 from interplay.motion.skeleton import FPS, NUM_JOINTS
 from interplay.store.models import ID_PATTERN, MotionRow, new_id
+from interplay.store.retention import Retention, enforce
 
 _ID_RE = re.compile(ID_PATTERN)
 
@@ -88,8 +90,14 @@ def _aware(dt: datetime) -> datetime:
 
 
 class MotionRepository:
-    def __init__(self, engine: Engine):
+    def __init__(self, engine: Engine, retention: Retention | None = None):
         self.engine = engine
+        self.retention = retention or Retention()
+
+    def enforce_retention(self) -> int:
+        """Delete what the retention policy no longer keeps (a no-op when it is off); how
+        many motions went."""
+        return enforce(self.engine, self.retention)
 
     def create(self, *, prompt: str, people: list[np.ndarray], seconds: float,
                seed: int | None = None, plan: dict | None = None, metrics: dict | None = None,
@@ -109,7 +117,10 @@ class MotionRepository:
         with Session(self.engine, expire_on_commit=False) as session:
             session.add(row)
             session.commit()
-            return self._to_motion(row)
+            stored = self._to_motion(row)
+        if self.retention.on:
+            self.enforce_retention()
+        return stored
 
     def get(self, motion_id: str) -> StoredMotion | None:
         if not valid_id(motion_id):

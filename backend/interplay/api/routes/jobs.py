@@ -1,5 +1,6 @@
 """POST /api/jobs (start a generation), GET /api/jobs/{id} (its status), DELETE /api/jobs/{id}
-(cancel it)."""
+(cancel it). Jobs are durable (`api/jobs.py`): admitted by the database (429 with Retry-After
+when full), run by this process's worker threads or by `interplay worker` processes."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ from fastapi import APIRouter, HTTPException, Request
 
 from interplay.api.deps import ClientDep, JobsDep, RepoDep
 from interplay.api.deps import generator as loaded_generator
-from interplay.api.jobs import JobSpec
+from interplay.api.jobs import JobSpec, QueueFull, Unavailable
 from interplay.api.schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
 from interplay.generators.base import random_seed
 
@@ -33,25 +34,31 @@ def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request,
             raise HTTPException(404, f"no motion {body.actor_motion_id!r} to react to")
     # Looked up here, not as a dependency: dependencies run before the body is validated, and
     # bad input must get its 422 even while the generator is unavailable (503).
-    generator = loaded_generator(request)
+    # With procrastinate the worker processes hold the generator, not this one.
+    generator = loaded_generator(request) if jobs.role == "embedded" else None
     seed = body.seed if body.seed is not None else random_seed()
     spec = JobSpec(prompt=body.prompt, persons=body.persons, seconds=body.seconds, seed=seed,
                    trajectory=body.trajectory.plain() if body.trajectory else None,
                    mode=body.mode, actor_motion_id=body.actor_motion_id, client_id=client)
     try:
         job = jobs.submit(spec, generator)
-    except OverflowError as exc:
-        raise HTTPException(429, str(exc)) from None
+    except QueueFull as exc:
+        raise HTTPException(429, str(exc), headers={"Retry-After": str(exc.retry_after)}) from None
+    except Unavailable as exc:
+        raise HTTPException(503, str(exc)) from None
     return JobCreated(job_id=job.id, motion_id=job.motion_id, stream=stream_path(job.id), seed=seed)
 
 
 @router.get("/{job_id}", response_model=JobStatus, responses=ERRORS)
 def job_status(job_id: str, jobs: JobsDep) -> JobStatus:
-    job = jobs.get(job_id)
+    """queued → running → done | failed | cancelled, with the reason a failed or cancelled
+    job ended (e.g. its worker process stopped) and how many times a worker started it."""
+    job = jobs.status(job_id)
     if job is None:
         raise HTTPException(404, f"no job {job_id!r} (unknown, malformed or expired)")
-    return JobStatus(job_id=job.id, motion_id=job.motion_id, status=job.status,
-                     events=job.event_count, stream=stream_path(job.id))
+    return JobStatus(job_id=job.id, motion_id=job.motion_id, status=job.status,  # type: ignore[arg-type]
+                     events=job.events, stream=stream_path(job.id), reason=job.reason,
+                     attempts=job.attempts)
 
 
 @router.delete("/{job_id}", response_model=JobCancelled, responses=ERRORS)
@@ -62,4 +69,4 @@ def cancel_job(job_id: str, jobs: JobsDep) -> JobCancelled:
     job = jobs.cancel(job_id)
     if job is None:
         raise HTTPException(404, f"no job {job_id!r} (unknown, malformed or expired)")
-    return JobCancelled(job_id=job.id, status=job.status, cancelled=job.cancelled)
+    return JobCancelled(job_id=job.id, status=job.status, cancelled=job.cancel_requested)

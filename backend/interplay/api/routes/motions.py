@@ -10,6 +10,7 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, HTTPException, Query, Response
 
 from interplay.api.deps import RepoDep
+from interplay.api.jobs import motion_missing
 from interplay.api.schemas import ERRORS, History, MotionOut, SkeletonOut
 from interplay.motion import skeleton as sk
 from interplay.pipeline.motion_json import motion_file, motion_payload
@@ -29,12 +30,12 @@ class BvhFps(IntEnum):
 
 def _load(repo, motion_id: str) -> StoredMotion:
     motion = repo.get(motion_id)
-    if motion is None:
-        raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
+    if motion is None:   # unknown, not made yet, its job failed (409), or deleted
+        raise motion_missing(repo, motion_id)
     return motion
 
 
-@router.get("/motions/{motion_id}", response_model=MotionOut, responses=ERRORS)
+@router.get("/motions/{motion_id}", response_model=MotionOut, responses={**ERRORS, 409: ERRORS[404]})
 def get_motion(motion_id: str, repo: RepoDep) -> dict:
     return motion_payload(_load(repo, motion_id))
 
@@ -45,7 +46,7 @@ def motion_history(motion_id: str, repo: RepoDep) -> dict:
     each with what made it (`edit`), for undo/redo and the share page."""
     chain = repo.lineage(motion_id)
     if not chain:
-        raise HTTPException(404, f"no motion {motion_id!r} (unknown or malformed id)")
+        raise motion_missing(repo, motion_id)
     return {"versions": [{"id": v.id, "parent_id": v.parent_id, "prompt": v.prompt,
                           "created_at": v.created_at.isoformat() if v.created_at else None,
                           "edit": v.edit} for v in chain]}

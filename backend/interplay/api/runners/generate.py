@@ -29,7 +29,7 @@ class GenerateRunner:
                  closing: Callable[[], bool]):
         self.job, self.generator, self.repo, self.closing = job, generator, repo, closing
         spec = job.spec
-        self.persons, self.total = spec.persons, spec.frames
+        self.persons, self.total = spec.persons, spec.frame_count
         self.people = np.zeros((spec.persons, self.total, NUM_JOINTS, 3), dtype=np.float32)
         self.written = 0
         self.contacts: list = [[] for _ in range(self.total)]

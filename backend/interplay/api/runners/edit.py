@@ -1,0 +1,44 @@
+"""The edit job (`POST /api/motions/{id}/edit`): `pipeline.editing.edit_stored` run in a job
+worker, so edits wait in the same queue, under the same limits, as generation.
+
+Its stream is one event: `done` (the new motion is stored under the job's motion id) or
+`error`, with the HTTP status the request answers in the job's result (422 for a bad edit, 503
+when the model cannot edit or fails)."""
+
+from __future__ import annotations
+
+import logging
+
+from interplay.api.events import DoneEvent, ErrorEvent
+from interplay.generators.base import EditUnavailable
+from interplay.pipeline.editing import edit_stored
+from interplay.pipeline.segment_source import Cancelled
+
+log = logging.getLogger(__name__)
+
+
+def edit_job(job, generator, repo) -> None:
+    """Run `job` (JobSpec mode "edit"): store the edited motion, push `done` or `error`."""
+    spec = job.spec
+    if job.cancelled:
+        raise Cancelled()
+    parent = repo.get(spec.parent_id)
+    if parent is None:
+        return _fail(job, 404, f"no motion {spec.parent_id!r} (unknown or malformed id)")
+    try:
+        edited = edit_stored(repo, generator, parent, spec.part, spec.prompt, spec.frames,
+                             spec.seed, spec.trajectory, id=job.motion_id,
+                             client_id=spec.client_id)
+    except ValueError as exc:
+        return _fail(job, 422, str(exc))
+    except EditUnavailable as exc:
+        return _fail(job, 503, str(exc))
+    except Exception as exc:  # a model failure is reported, never a bare 500
+        log.exception("edit of motion %s failed", spec.parent_id)
+        return _fail(job, 503, f"the edit failed: {type(exc).__name__}: {exc}")
+    job.push(DoneEvent(motion_id=edited.id, frames=edited.frames).dump())
+
+
+def _fail(job, status: int, message: str) -> None:
+    job.result = {"http_status": status}
+    job.push(ErrorEvent(stage="edit", message=message).dump())
