@@ -1,11 +1,11 @@
 import { expect, test } from "@playwright/test";
 import { hook, motionOf, openStudio, shot, startGeneration, waitDone } from "./studio";
 
-// "B reacts to A": a one-person walk gets a reactor with an intent. While the react job streams
+// "Person 2 reacts to Person 1": a one-person walk gets a reactor with an intent. While the react job streams
 // the stage holds both people and the received frames grow; the result is stored as a new
 // version (two people, person 0 the actor's stored joints, parent the actor) that undo/redo and
 // its share link reach, with the pair's metrics and distance track.
-test("B reacts to A: the reactor streams in next to the walk and is stored as the next version", async ({ page }, info) => {
+test("Person 2 reacts to Person 1: the reactor streams in next to the walk and is stored as the next version", async ({ page }, info) => {
   await openStudio(page);
   await expect(page.getByTestId("reactor")).toHaveCount(0); // nothing to react to yet
   await startGeneration(page, "a person walks forward", 1, 8);
@@ -65,7 +65,7 @@ test("B reacts to A: the reactor streams in next to the walk and is stored as th
   await expect(page.getByTestId("reactor")).toHaveCount(0); // B already there
   await expect(page.getByTestId("metric-intersection_frequency")).toBeVisible();
   await expect(page.getByTestId("distance-plot")).toBeVisible();
-  await expect(page.getByTestId("version-edit")).toContainText("B reacts to A: shake hands");
+  await expect(page.getByTestId("version-edit")).toContainText("Person 2 reacts to Person 1: shake hands");
   await expect(page.getByTestId("version-label")).toHaveText("v2 / 2");
   await page.waitForTimeout(1500); // let the pair play a little for the picture
   await shot(page, "r-reacted", info);

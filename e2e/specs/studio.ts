@@ -47,9 +47,12 @@ declare global {
   }
 }
 
-const SHOTS = join(dirname(fileURLToPath(import.meta.url)), "..", "test-results", "screenshots");
+// INTERPLAY_SHOTS moves them elsewhere: every Playwright run empties e2e/test-results/, so two
+// runs at once on one machine would delete each other's screenshots.
+const SHOTS = process.env.INTERPLAY_SHOTS ?? join(dirname(fileURLToPath(import.meta.url)), "..", "test-results", "screenshots");
 
-/** Save a screenshot under e2e/test-results/screenshots/ and attach it to the report. */
+/** Save a screenshot under e2e/test-results/screenshots/ (or $INTERPLAY_SHOTS) and attach it to
+ * the report. */
 export async function shot(target: Page | Locator, name: string, info: TestInfo): Promise<Buffer> {
   mkdirSync(SHOTS, { recursive: true });
   const path = join(SHOTS, `${name}.png`);

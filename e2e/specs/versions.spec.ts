@@ -14,7 +14,7 @@ test("undo / redo between versions, the URL follows, the copied link reproduces 
   await page.getByTestId("path-apply").click();
   await expect(page.getByTestId("version-label")).toHaveText("v2 / 2");
   const v2 = await hook(page);
-  await expect(page.getByTestId("version-edit")).toContainText("path (person A)");
+  await expect(page.getByTestId("version-edit")).toContainText("path (Person 1)");
   const m1 = await motionOf(page, v1.motionId!);
   const m2 = await motionOf(page, v2.motionId!);
   const end = (m: typeof m1) => m.people[0].joints[m.people[0].joints.length - 1][0];
