@@ -20,6 +20,9 @@
     INTERPLAY_JOB_STALE_S    a job whose worker is silent this long is failed (30)
     INTERPLAY_GENERATOR_FACTORY  "module:callable" building the generator (tests; default: models)
     INTERPLAY_RETENTION_MAX_MOTIONS / _MAX_AGE_S  retention, off by default
+    INTERPLAY_MAX_BODY_BYTES  larger request bodies are answered 413 (262144 = 256 KiB)
+    INTERPLAY_RETRY_AFTER_S   the Retry-After header of every 429 (5)
+    INTERPLAY_ALLOWED_ORIGINS extra origins a WebSocket may come from, comma-separated
 """
 
 from __future__ import annotations
@@ -64,6 +67,11 @@ class Settings(BaseSettings):
     llm_model: str | None = None
     llm_api_key: SecretStr | None = None
     llm_timeout_s: float = Field(default=20.0, gt=0, le=600)
+    # HTTP hardening (api/security.py): request bodies above this are 413, the Retry-After of
+    # every 429, extra origins a WebSocket may come from (comma-separated) besides the host's.
+    max_body_bytes: int = Field(default=256 * 1024, ge=1024)
+    retry_after_s: int = Field(default=5, ge=1, le=3600)
+    allowed_origins: str = ""
 
     @property
     def queue(self) -> str:

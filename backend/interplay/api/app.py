@@ -16,7 +16,7 @@ from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from interplay import __version__
-from interplay.api import stream
+from interplay.api import security, stream
 from interplay.api.queue.factory import retention_of
 from interplay.api.queue.setup import open_jobs
 from interplay.api.routes import edits, jobs, library, motions, pages, rerun
@@ -82,4 +82,5 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
     app.include_router(rerun.router)
     app.include_router(library.router)
     app.include_router(pages.router)  # last: it has a catch-all for top-level files
+    security.install(app, settings)   # body limit, security headers, Retry-After on 429
     return app

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, Strict, field_validator, model_validator
 
 from interplay.pipeline.requests import (
     MAX_PROMPT,
     MAX_SEED,
+    MAX_SPEED,
     GenerationRequest,
     TrajectoryIn,
 )
@@ -16,6 +17,11 @@ from interplay.pipeline.requests import (
 
 class JobCreate(GenerationRequest):
     model_config = ConfigDict(json_schema_extra={
+        "description": "A generation (mode generate: `prompt` required, no `actor_motion_id`) "
+                       "or a reaction (mode react: `actor_motion_id` required; `persons`, "
+                       "`seconds` and `trajectory` unused). `trajectory.person` must be less "
+                       "than `persons`; a drawn path may be at most "
+                       f"{MAX_SPEED:g} m/s × `seconds` long.",
         "examples": [{"prompt": "two people dance salsa", "persons": 2, "seconds": 6, "seed": 7}]})
 
     mode: Literal["generate", "react"] = Field(default="generate", description="generate, or "
@@ -34,11 +40,20 @@ class JobCreate(GenerationRequest):
         if self.trajectory is not None and self.trajectory.person >= self.persons:
             raise ValueError(f"trajectory person {self.trajectory.person} does not exist in a "
                              f"motion of {self.persons} person(s)")
+        if self.mode == "generate" and self.trajectory is not None \
+                and self.trajectory.length() > MAX_SPEED * self.seconds:
+            raise ValueError(f"trajectory: the drawn path is {self.trajectory.length():.1f} m "
+                             f"long; a {self.seconds:g} s motion covers at most "
+                             f"{MAX_SPEED * self.seconds:g} m ({MAX_SPEED:g} m/s)")
         return self
 
 
 class EditCreate(BaseModel):
     model_config = ConfigDict(json_schema_extra={
+        "description": "A part edit (`prompt`, optionally `part`, `frames`, `seed`), a path "
+                       "(`trajectory`), or both: at least one of `prompt` and `trajectory`; "
+                       "`part` and `frames` need a `prompt`; `frames` [a, b] with 0 ≤ a < b ≤ "
+                       "the motion's frames.",
         "examples": [{"part": "left_arm", "prompt": "raises the left arm above the head",
                       "frames": [20, 80], "seed": 3}]})
 
@@ -47,10 +62,12 @@ class EditCreate(BaseModel):
                              "(left_upper, right_upper, left_lower, right_lower).")
     prompt: str | None = Field(default=None, description=f"What the edited part does, "
                                f"1–{MAX_PROMPT} characters (optional with a trajectory).")
-    frames: list[int] | None = Field(default=None, min_length=2, max_length=2,
-                                     description="[a, b]: edit frames a … b−1 only (default all).")
-    seed: int | None = Field(default=None, ge=0, le=MAX_SEED,
-                             description="Sampling seed; random (and stored) when omitted.")
+    frames: list[Annotated[int, Strict()]] | None = Field(
+        default=None, min_length=2, max_length=2,
+        description="[a, b] (JSON integers, 0 ≤ a < b): edit frames a … b−1 only (default all).")
+    seed: Annotated[int, Strict()] | None = Field(
+        default=None, ge=0, le=MAX_SEED,
+        description="Sampling seed, a JSON integer 0 … 2³¹−1; random (and stored) when omitted.")
 
     trajectory: TrajectoryIn | None = Field(default=None, description="A drawn path or preset "
                                             "for the motion to follow.")

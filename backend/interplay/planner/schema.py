@@ -16,9 +16,19 @@ The JSON keeps the keys the API streamed before (index/prompt/start/end/persons 
 
 from __future__ import annotations
 
-from typing import Literal, get_args
+import math
+from typing import Annotated, Literal, get_args
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    ConfigDict,
+    Field,
+    Strict,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
 
 from interplay.motion.skeleton import FPS
 
@@ -28,33 +38,123 @@ SHAPES: tuple[Shape, ...] = get_args(Shape)
 PARTS = ("left_arm", "right_arm", "left_leg", "right_leg")
 MAX_SEGMENTS = 16
 
+# The cost bounds of a trajectory, whatever its form (drawn points, preset, waypoints, an LLM's
+# plan): the trajectory editor's work grows with the path's length and point count.
+MAX_PATH_M = 200.0      # metres along the path: 20 s (the longest motion) at 10 m/s, a sprint
+MAX_COORD = 100.0       # metres from the origin, any coordinate of a drawn point or waypoint
+MAX_POINTS = 2000       # drawn points or waypoints
+MAX_SPEED = 10.0        # m/s: a drawn path may be at most MAX_SPEED × the motion's seconds long
+MAX_SIZE_M = 50.0       # a preset's size_m
+MAX_TURNS = 20.0        # a preset's turns
+
+# make_curve's defaults (metres): each shape's size, forward length and turns when not given.
+DEFAULT_SIZE = {"arc": 4.0, "circle": 2.0, "zigzag": 1.0, "s_curve": 1.5, "heart": 2.5,
+                "figure_eight": 4.0, "square": 2.0, "spiral": 3.0}
+DEFAULT_DISTANCE = {"line": 4.0, "zigzag": 4.0, "s_curve": 4.0}
+DEFAULT_TURNS = {"arc": 0.25, "circle": 1.0, "spiral": 2.0}
+
+# Numbers as JSON numbers only: strict, so `true` or "3" is not taken for a number.
+Metres = Annotated[float, Strict(), Field(allow_inf_nan=False)]
+
+
+def _within(v: float) -> float:
+    if abs(v) > MAX_COORD:
+        raise ValueError(f"must be within ±{MAX_COORD:g} m, got {v:g}")
+    return v
+
+
+Coord = Annotated[float, Strict(), Field(allow_inf_nan=False, json_schema_extra={
+    "minimum": -MAX_COORD, "maximum": MAX_COORD}), AfterValidator(_within)]
+Point = tuple[Coord, Coord]
+
+
+def polyline_length(points) -> float:
+    """Metres along straight legs through points [[x, z], …]."""
+    return float(sum(math.dist(a, b) for a, b in zip(points, points[1:])))
+
 
 class TurnAt(BaseModel):
     """A turn towards a clock direction around the person (12 ahead, 3 to the right)."""
     model_config = ConfigDict(extra="forbid")
-    clock: int = Field(ge=1, le=12)
+    clock: Annotated[int, Strict()] = Field(ge=1, le=12)
     side: Literal["left", "right"] | None = None
-    after_m: float | None = Field(default=None, ge=0)
+    after_m: Metres | None = Field(default=None, gt=0, le=MAX_PATH_M,
+                                   description="Metres ahead before the turn (default half "
+                                               "the distance).")
 
 
 class TrajectorySpec(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", json_schema_extra={
+        "description": f"A preset path. Its length (as drawn: size_m, distance_m, turns, "
+                       f"waypoints, turn_at together) is at most {MAX_PATH_M:g} m; waypoints are "
+                       f"at most {MAX_POINTS} [x, z] pairs within ±{MAX_COORD:g} m; a polyline "
+                       f"needs two waypoints or a turn_at."})
     shape: Shape
-    clockwise: bool | None = None                 # seen from above
-    size_m: float | None = Field(default=None, gt=0, le=50)        # diameter / side / width
-    distance_m: float | None = Field(default=None, gt=0, le=200)   # path length or line length
-    turns: float | None = Field(default=None, gt=0, le=20)         # circles, arcs, spirals
+    clockwise: Annotated[bool, Strict()] | None = None                 # seen from above
+    size_m: Metres | None = Field(default=None, gt=0, le=MAX_SIZE_M)   # diameter / side / width
+    distance_m: Metres | None = Field(default=None, gt=0, le=MAX_PATH_M)  # path or line length
+    turns: Metres | None = Field(default=None, gt=0, le=MAX_TURNS)     # circles, arcs, spirals
     direction: Literal["forward", "backward", "left", "right"] | None = None
-    waypoints: list[tuple[float, float]] | None = None             # [[x, z], …] metres
+    waypoints: list[Point] | None = Field(default=None, max_length=MAX_POINTS)  # [[x, z], …] m
     turn_at: TurnAt | None = None
-    text: str | None = None                       # the phrase it was read from
+    text: str | None = Field(default=None, max_length=500)   # the phrase it was read from
 
     @model_validator(mode="after")
     def _polyline_has_points(self):
         if self.shape == "polyline" and (not self.waypoints or len(self.waypoints) < 2) \
                 and self.turn_at is None:
             raise ValueError("a polyline trajectory needs at least two waypoints or a turn_at")
+        total = spec_length(self)
+        if total > MAX_PATH_M:
+            raise ValueError(f"the {self.shape} path is {total:.0f} m long; the limit is "
+                             f"{MAX_PATH_M:g} m")
         return self
+
+
+_HEART = (2 + math.pi) / (1 + math.sqrt(2) / 2)   # heart path length / width (curves.heart)
+_LEMNISCATE = 2.622057554292119                  # figure-eight path length / end-to-end size
+
+
+def _sine_length(forward: float, amplitude: float) -> float:
+    """Length of one sine period `forward` long with `amplitude` (curves.s_curve)."""
+    k = 2 * math.pi * amplitude / forward
+    n = 64                                         # periodic: the mean converges fast
+    return forward * sum(math.sqrt(1 + (k * math.cos(2 * math.pi * i / n)) ** 2)
+                         for i in range(n)) / n
+
+
+def spec_length(spec: TrajectorySpec) -> float:
+    """Metres along the path `curves.make_curve` draws for `spec` (before it is fitted to a
+    motion), from the numbers alone: what MAX_PATH_M bounds."""
+    shape, size, distance = spec.shape, spec.size_m, spec.distance_m
+    turns = spec.turns or DEFAULT_TURNS.get(shape, 1.0)
+    forward = distance or (size if shape == "line" and size else DEFAULT_DISTANCE.get(shape, 4.0))
+    if shape in ("line", "polyline") and spec.turn_at is not None and spec.waypoints is None:
+        first = spec.turn_at.after_m if spec.turn_at.after_m is not None else forward / 2
+        return first + (forward - first if forward - first > 0.1 else forward / 2)
+    if shape == "polyline":
+        points = list(spec.waypoints or [])
+        if points and math.hypot(*points[0]) > 1e-9:
+            points.insert(0, (0.0, 0.0))
+        return polyline_length(points)
+    if shape == "free":
+        return polyline_length(spec.waypoints or [])
+    if shape == "line":
+        return forward
+    width = size or DEFAULT_SIZE[shape]
+    if shape == "zigzag":
+        legs = max(2, int(round(forward)))
+        return legs * math.hypot(width, forward / legs)
+    if shape == "s_curve":
+        return _sine_length(forward, width / 2)
+    if size is None and distance is not None:      # scaled so its path is distance_m long
+        return distance
+    if shape in ("arc", "circle"):
+        return math.pi * width * turns
+    if shape == "spiral":
+        growth = width / 2 / (turns + 0.5)
+        return math.hypot(math.pi * turns * (growth / 2 + width / 2), growth * turns)
+    return {"heart": _HEART, "figure_eight": _LEMNISCATE, "square": 4.0}[shape] * width
 
 
 class PartEdits(BaseModel):

@@ -18,7 +18,15 @@ import math
 import re
 from typing import Literal, cast
 
-from interplay.planner.schema import TrajectorySpec, TurnAt
+from interplay.planner.schema import (
+    MAX_COORD,
+    MAX_PATH_M,
+    MAX_SIZE_M,
+    MAX_TURNS,
+    TrajectorySpec,
+    TurnAt,
+    spec_length,
+)
 
 _NUM = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
         "nine": 9, "ten": 10, "twenty": 20, "a": 1, "half a": 0.5, "a half": 0.5}
@@ -82,8 +90,9 @@ def parse(text: str) -> TrajectorySpec | None:
             side = said or ("right" if hour < 6 else "left" if hour > 6 else None)
             dist = _DISTANCE.search(t)
             distance_m = round(_number(dist.group(1)) * _UNIT[dist.group(2)], 3) if dist else None
-            return TrajectorySpec(shape="line", turn_at=TurnAt(clock=hour, side=side),
-                                  direction="forward", text=text.strip(), distance_m=distance_m)
+            return _bounded({"shape": "line", "turn_at": TurnAt(clock=hour, side=side),
+                             "direction": "forward", "text": text.strip(),
+                             "distance_m": distance_m})
     travel = _TRAVEL_HINT.search(t) is not None or re.search(r"\b(?:path|trajectory|route)\b", t)
     # Shapes only count for travel: "swings the arm in circles" is not a path.
     shape = next((s for rx, s in _SHAPES if re.search(rx, t)), None) if travel else None
@@ -127,6 +136,37 @@ def parse(text: str) -> TrajectorySpec | None:
             spec["waypoints"] = [(0.0, 0.0), (round(hx * d, 3), round(hz * d, 3))]
     elif distance is not None:
         spec["distance_m"] = round(distance, 3)
+    return _bounded(spec)
+
+
+def _bounded(spec: dict) -> TrajectorySpec:
+    """The spec with its numbers brought within the schema's limits: none that is not positive,
+    waypoints (and the distance with them) scaled to within MAX_COORD, size_m, turns and
+    distance_m at most their maxima, and the whole path scaled down to MAX_PATH_M ("walks 300
+    metres" walks 200, "walks 500 m backwards" 100; a preset is fitted to the motion's walk
+    anyway)."""
+    spec = {k: v for k, v in spec.items() if v is not None}
+    for key in ("distance_m", "size_m", "turns"):
+        if key in spec and not spec[key] > 0:
+            del spec[key]
+
+    def scale(k: float) -> None:
+        for key in ("distance_m", "size_m"):
+            if key in spec:
+                spec[key] *= k
+        if spec.get("waypoints"):
+            spec["waypoints"] = [(x * k, z * k) for x, z in spec["waypoints"]]
+
+    far = max((abs(c) for p in spec.get("waypoints") or [] for c in p), default=0.0)
+    if far > MAX_COORD:
+        scale(MAX_COORD / far)
+    for key, top in (("distance_m", MAX_PATH_M), ("size_m", MAX_SIZE_M), ("turns", MAX_TURNS)):
+        if key in spec:
+            spec[key] = min(float(spec[key]), top)
+    total = spec_length(TrajectorySpec.model_construct(**{**dict.fromkeys(
+        TrajectorySpec.model_fields), **spec}))
+    if total > MAX_PATH_M:
+        scale(MAX_PATH_M / total * (1 - 1e-6))
     return TrajectorySpec(**spec)
 
 

@@ -69,6 +69,10 @@ class TrajectoryConfig:
 
 
 DEFAULT = TrajectoryConfig()
+# Most resampled points and spline segments a curve gets: 200 m (MAX_PATH_M, the longest path
+# a request may ask for) at the default spacings; longer curves are sampled more coarsely.
+MAX_SAMPLES = 20_000
+MAX_KNOTS = 700
 
 
 @dataclass(frozen=True)
@@ -113,7 +117,9 @@ def _gaussian(x: np.ndarray, sigma: float) -> np.ndarray:
 
 def smooth_curve(points, cfg: TrajectoryConfig = DEFAULT) -> Curve:
     """Fit a smoothing cubic B-spline to ground points (N, 2) and resample it every
-    `cfg.spacing` metres of arc length. The spline is fitted twice: first over the points'
+    `cfg.spacing` metres of arc length (knots every `cfg.knot_spacing`; on curves longer than
+    MAX_SAMPLES × spacing or MAX_KNOTS × knot_spacing both grow so that neither count does:
+    the work is linear in the points given and bounded whatever the length). The spline is fitted twice: first over the points'
     chord lengths, then over the first fit's arc lengths, so unevenly spaced points do not
     bunch the knots. The first and last points are held (weighted) so the curve starts and ends
     where it was asked to."""
@@ -124,18 +130,21 @@ def smooth_curve(points, cfg: TrajectoryConfig = DEFAULT) -> Curve:
     total = length(pts)
     if len(pts) < 2 or total < 1e-3:
         raise ValueError("a curve needs at least two distinct points")
-    segments = max(4, int(np.ceil(total / cfg.knot_spacing)))
+    # Knots every knot_spacing and samples every spacing metres, both coarser past the path
+    # lengths requests may ask for (MAX_PATH_M), so the cost stays bounded whatever the curve.
+    segments = max(4, int(np.ceil(total / max(cfg.knot_spacing, total / MAX_KNOTS))))
+    spacing = max(cfg.spacing, total / MAX_SAMPLES)
     weights = np.ones(len(pts))
     weights[[0, -1]] = 1e3
     u = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(pts, axis=0), axis=1))]) / total
-    dense_u = np.linspace(0.0, 1.0, max(2000, int(2 * total / cfg.spacing)))
+    dense_u = np.linspace(0.0, 1.0, max(2000, int(2 * total / spacing)))
     for fit_round in range(2):
         coef = bspline.fit(u, pts, segments, cfg.penalty, weights)
         dense = bspline.evaluate(coef, dense_u)
         arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(dense, axis=0), axis=1))])
         if fit_round == 0:
             u = np.interp(u, dense_u, arc / arc[-1])  # re-parametrise the points by arc length
-    n = max(int(np.ceil(arc[-1] / cfg.spacing)), 2) + 1
+    n = max(int(np.ceil(arc[-1] / spacing)), 2) + 1
     s = np.linspace(0.0, arc[-1], n)
     at_u = np.interp(s, arc, dense_u)
     tangent = bspline.evaluate(coef, at_u, derivative=1)

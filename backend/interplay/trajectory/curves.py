@@ -16,18 +16,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from interplay.planner.schema import TrajectorySpec
+from interplay.planner.schema import DEFAULT_DISTANCE, DEFAULT_SIZE, DEFAULT_TURNS, TrajectorySpec
 
 STEP = 0.01  # m between generated points
+MAX_CURVE_POINTS = 20_000   # 200 m (MAX_PATH_M) at STEP; longer curves get a coarser step
 
 SHAPES = ("line", "arc", "circle", "zigzag", "s_curve", "heart", "figure_eight", "square",
           "spiral", "polyline", "free")
 
-# make_curve defaults (metres): each shape's size when the spec gives none.
-DEFAULT_SIZE = {"arc": 4.0, "circle": 2.0, "zigzag": 1.0, "s_curve": 1.5, "heart": 2.5,
-                "figure_eight": 4.0, "square": 2.0, "spiral": 3.0}
-DEFAULT_DISTANCE = {"line": 4.0, "zigzag": 4.0, "s_curve": 4.0}
-DEFAULT_TURNS = {"arc": 0.25, "circle": 1.0, "spiral": 2.0}
+# make_curve's defaults for a spec's missing size, distance and turns (DEFAULT_SIZE,
+# DEFAULT_DISTANCE, DEFAULT_TURNS) live in the planner's schema, so that it can tell a spec's
+# path length (schema.spec_length) without drawing it.
 ZIGZAG_SEGMENTS = 4
 
 
@@ -46,15 +45,22 @@ def _mirror(points: np.ndarray, clockwise: bool) -> np.ndarray:
     return points * np.array([-1.0, 1.0]) if clockwise else points
 
 
+def _step(length: float) -> float:
+    """STEP, or coarser on curves longer than MAX_CURVE_POINTS × STEP (beyond what a request
+    may ask for), so that no curve has more than about MAX_CURVE_POINTS points."""
+    return max(STEP, length / MAX_CURVE_POINTS)
+
+
 def _count(length: float) -> int:
-    return max(int(np.ceil(length / STEP)) + 1, 16)
+    return max(int(np.ceil(length / _step(length))) + 1, 16)
 
 
 def _densify(vertices: np.ndarray) -> np.ndarray:
     """Points about STEP apart along the straight legs between vertices (N, 2); every vertex kept."""
+    step = _step(float(np.linalg.norm(np.diff(vertices, axis=0), axis=1).sum()))
     pieces = []
     for a, b in zip(vertices[:-1], vertices[1:]):
-        n = max(int(np.ceil(np.linalg.norm(b - a) / STEP)), 1)
+        n = max(int(np.ceil(np.linalg.norm(b - a) / step)), 1)
         pieces.append(a + (b - a) * (np.arange(n) / n)[:, None])
     return np.concatenate(pieces + [vertices[-1:]])
 
