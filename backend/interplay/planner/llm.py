@@ -7,22 +7,34 @@ On any error, timeout or invalid answer the embedded planner answers instead and
     settings = Settings(llm_base_url="http://localhost:11434/v1", llm_model="qwen2.5:7b")
     plan = llm_plan("a person does the wakanda salute", 1, 4.0, settings,
                     fallback=lambda: embedded_plan(...))
+
+Bounded whatever the endpoint does: one deadline (INTERPLAY_LLM_TIMEOUT_S) for the whole call,
+connecting, sending and every byte of the answer together (an endpoint dripping one byte a
+second cannot hold the job past it); the body is streamed and the read stops past MAX_BODY
+bytes; JSON is parsed without NaN or infinities, and deep nesting, huge numbers or wrong types
+are reasons to fall back, like any other, never an error of the job.
 """
 
 from __future__ import annotations
 
+import asyncio
 import json
+import math
 import re
-from typing import Any, Callable
+import threading
+from typing import Annotated, Any, Callable, Coroutine, TypeVar
 
 import httpx
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError
 
 from interplay.motion.skeleton import FPS
 from interplay.planner.durations import allocate
 from interplay.planner.schema import MAX_SEGMENTS, PartEdits, Plan, TrajectorySpec, readable
 
 MAX_ANSWER = 200_000     # characters of model output we are willing to parse
+MAX_BODY = 1_000_000     # bytes of the endpoint's answer read before giving up on it
+MAX_REASON = 300         # characters of a fallback reason kept in the plan
+T = TypeVar("T")
 
 
 class LLMSegment(BaseModel):
@@ -32,17 +44,20 @@ class LLMSegment(BaseModel):
     base: str = Field(min_length=1, max_length=300)
     edits: PartEdits = Field(default_factory=PartEdits)
     trajectory: TrajectorySpec | None = None
-    seconds: float = Field(gt=0, le=30)
-    persons: list[int] = Field(default_factory=lambda: [0], min_length=1, max_length=2)
-    roles: dict[str, str] | None = None
-    repeat: int = Field(default=1, ge=1, le=20)
+    seconds: Annotated[float, Strict()] = Field(gt=0, le=30, allow_inf_nan=False)
+    persons: list[Annotated[int, Strict()]] = Field(default_factory=lambda: [0], min_length=1,
+                                                     max_length=2)
+    roles: dict[str, Annotated[str, Field(max_length=500)]] | None = Field(default=None,
+                                                                           max_length=2)
+    repeat: Annotated[int, Strict()] = Field(default=1, ge=1, le=20)
 
 
 class LLMAnswer(BaseModel):
     model_config = ConfigDict(extra="ignore")
     rewritten: str = Field(min_length=1, max_length=2000)
     segments: list[LLMSegment] = Field(min_length=1, max_length=MAX_SEGMENTS)
-    reasons: list[str] = Field(default_factory=list, max_length=50)
+    reasons: list[Annotated[str, Field(max_length=500)]] = Field(default_factory=list,
+                                                                 max_length=50)
 
 
 SYSTEM = """You are the task planner of a text-to-motion system. Plan the motion in three steps.
@@ -86,13 +101,34 @@ def extract_json(content: str) -> dict:
     start, end = text.find("{"), text.rfind("}")
     if start < 0 or end <= start:
         raise ValueError("the answer contains no JSON object")
-    try:
-        data = json.loads(text[start:end + 1])
-    except json.JSONDecodeError as exc:
-        raise ValueError(f"the answer is not valid JSON ({exc.msg} at character {exc.pos})") from None
+    data = loads(text[start:end + 1], "the answer")
     if not isinstance(data, dict):
         raise ValueError("the answer is not a JSON object")
     return data
+
+
+def _no_constant(name: str) -> float:
+    raise ValueError(f"{name} is not a JSON number")
+
+
+def _finite(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value):
+        raise ValueError(f"{text[:20]} is too large a number")
+    return value
+
+
+def loads(text: str | bytes, what: str) -> Any:
+    """Strict JSON: no NaN or Infinity, no number that overflows a float; ValueError (never
+    RecursionError) for whatever is not, naming `what`."""
+    try:
+        return json.loads(text, parse_constant=_no_constant, parse_float=_finite)
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"{what} is not valid JSON ({exc.msg} at character {exc.pos})") from None
+    except RecursionError:
+        raise ValueError(f"{what} is nested too deeply") from None
+    except ValueError as exc:          # NaN, 1e999, an integer of more than 4300 digits
+        raise ValueError(f"{what} is not valid JSON ({str(exc)[:80]})") from None
 
 
 def to_plan(answer: LLMAnswer, prompt: str, persons: int, seconds: float | None) -> Plan:
@@ -118,21 +154,73 @@ def to_plan(answer: LLMAnswer, prompt: str, persons: int, seconds: float | None)
                                 "reasons": answer.reasons, "planner": "llm"})
 
 
+class LLMTimeout(Exception):
+    """The call went past its deadline."""
+
+
+async def _post(url: str, body: dict, headers: dict[str, str], timeout: float,
+                transport: httpx.AsyncBaseTransport | None) -> bytes:
+    """The endpoint's answer body, read in chunks and abandoned past MAX_BODY bytes."""
+    async with httpx.AsyncClient(timeout=timeout, transport=transport) as client:
+        async with client.stream("POST", url, json=body, headers=headers) as r:
+            if r.status_code != 200:
+                raise ValueError(f"the endpoint answered HTTP {r.status_code}")
+            encoding = r.headers.get("content-encoding", "identity").strip().lower()
+            if encoding not in ("", "identity"):
+                raise ValueError(f"the endpoint compressed its answer ({encoding}) although "
+                                 "asked not to")
+            declared = r.headers.get("content-length", "")
+            if declared.isdigit() and int(declared) > MAX_BODY:
+                raise ValueError(f"the endpoint's answer is {int(declared)} bytes long; the "
+                                 f"limit is {MAX_BODY}")
+            data = bytearray()
+            async for chunk in r.aiter_bytes():      # identity: as they arrive
+                data += chunk
+                if len(data) > MAX_BODY:
+                    raise ValueError(f"the endpoint's answer is longer than {MAX_BODY} bytes")
+            return bytes(data)
+
+
+def _run(coro: Coroutine[Any, Any, T], timeout: float) -> T:
+    """Run `coro` on its own event loop, cancelled after `timeout` seconds (LLMTimeout); on a
+    thread of its own if this one already runs a loop."""
+    async def bounded() -> T:
+        try:
+            return await asyncio.wait_for(coro, timeout)
+        except asyncio.TimeoutError:
+            raise LLMTimeout() from None
+
+    try:
+        asyncio.get_running_loop()
+    except RuntimeError:
+        return asyncio.run(bounded())
+    out: dict[str, Any] = {}
+
+    def target() -> None:
+        try:
+            out["value"] = asyncio.run(bounded())
+        except BaseException as exc:   # handed to the caller below
+            out["error"] = exc
+    thread = threading.Thread(target=target, name="llm-planner", daemon=True)
+    thread.start()
+    thread.join()
+    if "error" in out:
+        raise out["error"]
+    return out["value"]
+
+
 def ask(prompt: str, persons: int, seconds: float | None, settings,
-        transport: httpx.BaseTransport | None = None) -> Plan:
-    """The LLM's plan; raises ValueError / httpx errors when there is none."""
+        transport: httpx.AsyncBaseTransport | None = None) -> Plan:
+    """The LLM's plan; raises ValueError / LLMTimeout / httpx errors when there is none."""
     url = settings.llm_base_url.rstrip("/") + "/chat/completions"
-    headers = {"Content-Type": "application/json"}
+    headers = {"Content-Type": "application/json", "Accept-Encoding": "identity"}
     if settings.llm_api_key is not None:
         headers["Authorization"] = f"Bearer {settings.llm_api_key.get_secret_value()}"
     body = {"model": settings.llm_model, "messages": _messages(prompt, persons, seconds),
             "temperature": 0, "response_format": {"type": "json_object"}}
-    with httpx.Client(timeout=settings.llm_timeout_s, transport=transport) as client:
-        r = client.post(url, json=body, headers=headers)
-    if r.status_code != 200:
-        raise ValueError(f"the endpoint answered HTTP {r.status_code}")
+    raw = _run(_post(url, body, headers, settings.llm_timeout_s, transport), settings.llm_timeout_s)
     try:
-        content = r.json()["choices"][0]["message"]["content"]
+        content = loads(raw, "the endpoint's answer")["choices"][0]["message"]["content"]
     except (ValueError, KeyError, IndexError, TypeError):
         raise ValueError("the endpoint's answer is not an OpenAI chat completion") from None
     try:
@@ -143,18 +231,26 @@ def ask(prompt: str, persons: int, seconds: float | None, settings,
 
 
 def llm_plan(prompt: str, persons: int, seconds: float | None, settings,
-             fallback: Callable[[], Plan], transport: httpx.BaseTransport | None = None) -> Plan:
-    """The LLM's plan, or the fallback's with `fallback_reason` saying what went wrong."""
+             fallback: Callable[[], Plan],
+             transport: httpx.AsyncBaseTransport | None = None) -> Plan:
+    """The LLM's plan, or the fallback's with `fallback_reason` saying what went wrong: any
+    failure of the endpoint or its answer falls back, none fails the caller."""
     try:
         plan = ask(prompt, persons, seconds, settings, transport)
         plan.reasons.insert(0, f"llm: planned by {settings.llm_model}")
         return plan
-    except httpx.TimeoutException:
+    except (LLMTimeout, httpx.TimeoutException):
         why = f"timed out after {settings.llm_timeout_s:g} s"
     except httpx.HTTPError as exc:
         why = f"request failed ({type(exc).__name__}: {exc})"
+    except RecursionError:
+        why = "the answer is nested too deeply"
     except ValueError as exc:
         why = str(exc)
+    except Exception as exc:   # whatever else the answer provoked: still the embedded planner
+        why = f"the answer could not be used ({type(exc).__name__}: {exc})"
+    if len(why) > MAX_REASON:
+        why = why[:MAX_REASON - 1] + "…"
     plan = fallback()
     plan.fallback_reason = f"LLM planner {settings.llm_model!r}: {why}; the embedded planner answered"
     return plan
