@@ -95,6 +95,7 @@ def cmd_eval_prompts(args) -> int:
     from interplay.eval.prompts.rows import ROW_NAMES as PROMPT_ROWS
     from interplay.eval.prompts.rows import load_rows
     from interplay.eval.prompts.suite import load_suite, select
+    from interplay.motion.clip import DATA_DIR, default_clips
     from interplay.settings import get_settings
     names = [r.strip() for r in args.rows.split(",") if r.strip()] if args.rows else list(PROMPT_ROWS)
     if args.seeds < 1:
@@ -110,8 +111,12 @@ def cmd_eval_prompts(args) -> int:
     out = Path(args.out or f"var/eval-prompts/{args.split}")
     t0 = time.monotonic()
     results = run(rows, prompts, seeds=args.seeds, out=out, log=lambda m: print(m, file=sys.stderr))
+    clips = default_clips(str(get_settings().data_dir or DATA_DIR))
+    sources: dict[str, int] = {}
+    for c in clips:
+        sources[c.source] = sources.get(c.source, 0) + 1
     report = build_report(rows, skipped, prompts, results, args.split, args.seeds,
-                          time.monotonic() - t0)
+                          time.monotonic() - t0, {"clips": len(clips), "sources": dict(sorted(sources.items()))})
     write(out, report, results)
     print(json.dumps(report, indent=1) if args.json else format_table(report))
     print(f"per-prompt results and motions: {out}/", file=sys.stderr)

@@ -57,7 +57,8 @@ def test_rates_count_checks_per_seed_with_n_a_where_a_row_cannot_serve(tmp_path)
     rec = json.loads((tmp_path / "results.jsonl").read_text().splitlines()[0])
     motion = Motion.from_json(json.loads((tmp_path / rec["motion"]).read_text()))
     assert motion.frames == len(_clip("squat1Reps")) and motion.seed == 0
-    assert "| squats |" in (tmp_path / "table.md").read_text()
+    md = (tmp_path / "table.md").read_text()
+    assert "| category | prompts | squats | salsa |" in md and "| counts | 2 | 0.50±0.00 | n/a |" in md
 
 
 def test_a_raising_generator_fails_its_checks_and_is_counted(tmp_path):

@@ -149,44 +149,54 @@ def _cell(rate: dict | None, key: str = "checks") -> str:
     return f"{rate[key]:.2f}" + (f"±{ci:.2f}" if ci is not None else "")
 
 
-COLUMNS = [(c, n) for c, n in CATEGORIES.items()] + [
-    ("one_person", "1-person"), ("two_person_all", "2-person"), ("all", "all")]
+SUMMARY = [("one_person", "1-person, all categories", "checks"),
+           ("two_person_all", "2-person, all", "checks"),
+           ("all", "all checks", "checks"), ("all", "prompts with every check passed", "prompts"),
+           ("all", "outputs passing every plausibility check", "plausible")]
 
 
 def format_table(report: dict, markdown: bool = False) -> str:
-    """The pass-rate table (checks passed, mean ± 95 % CI over seeds), then prompts fully
-    passed, plausible outputs, plausibility failures and skipped rows."""
+    """The pass-rate table: a line per category (prompts in the split, then per row the share of
+    checks passed, mean ± 95 % CI over seeds, n/a where the row cannot serve the prompts), the
+    summaries, then plausibility failures by check, skipped rows and what ran."""
     t = report["table"]
+    names = list(t)
     head = [f"eval-prompts · split {report['split']} · {report['prompts']} prompts "
             f"({report['one_person_prompts']} one-person, {report['two_person_prompts']} two-person) "
-            f"· seeds {report['seeds']} · checks passed, mean ± 95 % CI over seeds"]
-    cols = ["row"] + [n for _, n in COLUMNS] + ["prompts all passed", "plausible outputs"]
-    lines = []
-    for name, cells in t.items():
-        lines.append([name] + [_cell(cells[c]) for c, _ in COLUMNS]
-                     + [_cell(cells["all"], "prompts"), _cell(cells["all"], "plausible")])
+            f"· seeds {report['seeds']} · share of checks passed, mean ± 95 % CI over seeds"]
+    cols = ["category", "prompts"] + names
+    lines = [[label, str(report["categories"].get(cat, ""))] + [_cell(t[n][cat]) for n in names]
+             for cat, label in CATEGORIES.items()]
+    lines += [[label, ""] + [_cell(t[n][key], kind) for n in names] for key, label, kind in SUMMARY]
     if markdown:
         body = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
         body += ["| " + " | ".join(r) + " |" for r in lines]
     else:
         width = [max(len(str(x)) for x in col) for col in zip(cols, *lines)]
-        body = ["  ".join(str(x).ljust(w) for x, w in zip(r, width)) for r in [cols, *lines]]
+        body = ["  ".join(str(x).ljust(w) for x, w in zip(r, width)).rstrip() for r in [cols, *lines]]
     tail = []
     for name, cells in t.items():
         f = cells["plausibility_failures"]
-        fails = ", ".join(f"{k} {v}" for k, v in f.items() if k != "outputs") or "none"
+        n = max(f["outputs"], 1)
+        fails = ", ".join(f"{k} {v} ({v / n:.0%})" for k, v in f.items() if k != "outputs") or "none"
         tail.append(f"{name}: plausibility failures in {f['outputs']} outputs: {fails}"
                     + (f"; {cells['errors']} outputs raised" if cells["errors"] else ""))
     for name, why in report.get("skipped", {}).items():
         tail.append(f"{name}: skipped ({why})")
     for name, about in report.get("rows", {}).items():
         tail.append(f"{name}: {about}")
-    return "\n".join(head + [""] + body + [""] + tail)
+    data = report.get("data") or {}
+    if data:
+        tail.append(f"data: {data.get('clips')} clips ({', '.join(f'{k} {v}' for k, v in data.get('sources', {}).items())})")
+    sep = ["", ""] if markdown else [""]
+    return "\n".join(head + [""] + body + sep + (["- " + x for x in tail] if markdown else tail))
 
 
 def build_report(rows: list[Row], skipped: dict, prompts: list[Prompt], results: list[dict],
-                 split: str, seeds: int, elapsed_s: float) -> dict:
-    return {"split": split, "seeds": seeds, "prompts": len(prompts),
+                 split: str, seeds: int, elapsed_s: float, data: dict | None = None) -> dict:
+    """The report: what ran (split, seeds, prompts per category, rows and skipped rows, the
+    processed data the generators drew on) and the table."""
+    return {"split": split, "seeds": seeds, "prompts": len(prompts), "data": data or {},
             "one_person_prompts": sum(p.persons == 1 for p in prompts),
             "two_person_prompts": sum(p.persons == 2 for p in prompts),
             "categories": {c: sum(p.category == c for p in prompts) for c in CATEGORIES},

@@ -33,6 +33,9 @@ AIRBORNE_M = 0.05          # both feet (the lower of ankle and toe, each above i
 JUMP_RISE_M = 0.08         # pelvis this far over its straight-legged standing height while in
                            # the air: a jump or hop (captured jumps and hops rise 0.2–0.5 m; a
                            # running stride's flight lifts the pelvis ~5 cm)
+JUMP_FOOT_M = 0.10         # … with both feet ≥ 10 cm up at the top (captured hops clear 0.2–0.3 m;
+                           # a body sinking into the floor lifts its feet off a floor that sinks
+                           # with it by a few cm only)
 FLIGHT_MIN_FRAMES = 2      # ≥ 0.1 s in the air …
 FLIGHT_MAX_S = 1.0         # … and < 1 s (a 50 cm jump is in the air ~0.6 s)
 NEAR_FLIGHT_S = 0.15       # take-off and landing frames next to a flight (the pelvis decelerates
@@ -201,9 +204,10 @@ def jumps(b: BodyFrame) -> list[tuple[int, int]]:
     """Ballistic flights that lift the pelvis over its standing height by JUMP_RISE_M: jumps
     and hops (a running stride's flight rises less; a body lifted off the floor and held there,
     a hover, does not fall like a thrown body and is no jump)."""
-    pelvis = b.height[:, sk.PELVIS]
+    pelvis, foot = b.height[:, sk.PELVIS], lowest_foot(b)
     return [(s, e) for s, e in flights(b)
-            if pelvis[s:e].max() - b.stand >= JUMP_RISE_M and ballistic(b, s, e)]
+            if pelvis[s:e].max() - b.stand >= JUMP_RISE_M and foot[s:e].max() >= JUMP_FOOT_M
+            and ballistic(b, s, e)]
 
 
 def ballistic(b: BodyFrame, s: int, e: int) -> bool:
