@@ -12,7 +12,6 @@ from interplay.motion.checks import measures as M
 from interplay.motion.checks import named as N
 from interplay.motion.clip import default_clips
 from interplay.motion.ik import two_bone_ik
-from interplay.motion.pair.windows import canonical_window  # noqa: F401  (pairs stay in their frame)
 from interplay.motion.rotations import yaw_matrix
 
 J = sk.JOINT_INDEX
