@@ -26,7 +26,7 @@ def test_a_two_person_glb_has_a_skinned_body_and_skeleton_per_person(pair):
     assert doc.asset.version == "2.0" and doc.extras["fps"] == 20.0
     assert len(doc.skins) == len(doc.meshes) == 2 and len(doc.animations) == 1
     roots = [doc.nodes[n].name for n in doc.scenes[doc.scene].nodes]
-    assert roots == ["person0", "person0_body", "person1", "person1_body"]
+    assert roots == ["person1", "person1_body", "person2", "person2_body"]
     mesh = humanoid()
     for k, (skin, rig) in enumerate(zip(doc.skins, rigs_of(people))):
         names = [doc.nodes[n].name for n in skin.joints]
@@ -83,7 +83,7 @@ def test_the_animation_only_variant_has_skeletons_and_no_mesh():
     people = fixture_people("coda_hug")
     doc, blob = load(write_glb(people, mesh=False))
     assert doc.meshes == [] and doc.materials == [] and len(doc.skins) == 2
-    assert [doc.nodes[n].name for n in doc.scenes[0].nodes] == ["person0", "person1"]
+    assert [doc.nodes[n].name for n in doc.scenes[0].nodes] == ["person1", "person2"]
     assert len(doc.animations[0].channels) == 46
 
 

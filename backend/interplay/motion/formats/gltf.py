@@ -5,11 +5,12 @@ one module of `motion/` that imports anything but numpy).
     data = write_glb(people, mesh=False)          # skeletons + the animation, no mesh
     data = humanoid_glb()                         # the bare mesh on the template, rest pose
 
-Layout, per person k (scene roots "person0", "person1"): a node tree of the 22 smpl22 joints
+Layout, per person k (scene roots "person1", "person2": people are numbered from 1, as the
+studio and the BVH file names number them): a node tree of the 22 smpl22 joints
 named as the skeleton (`skeleton.JOINT_NAMES`; each person's under its own root), each joint's
 rest translation its offset from its parent (the pelvis's: its rest height), rotations identity
 in the bind pose; a skin over those joints (in skeleton order, so JOINTS_0 holds skeleton joint
-indices) with inverse bind matrices of the rest pose; with the mesh, a node "person{k}_body"
+indices) with inverse bind matrices of the rest pose; with the mesh, a node "person{k+1}_body"
 holding the humanoid (`formats/humanoid.py`) fitted to the person's rest offsets, skinned with
 up to four joints per vertex. One animation for the whole motion: for every person the
 pelvis's translation (the root, metres) and every joint's local rotation (unit quaternions
@@ -148,7 +149,7 @@ def rigs_glb(rigs: Sequence[Rig], fps: float = sk.FPS, *, mesh: bool = True,
     times = buf.add((np.arange(t) / float(fps)).astype(np.float32), bounds=True)
     animation = gl.Animation(name=name)
     for k, rig in enumerate(rigs):
-        first = _add_person(doc, buf, f"person{k}", PERSON_COLOURS[k % len(PERSON_COLOURS)],
+        first = _add_person(doc, buf, f"person{k + 1}", PERSON_COLOURS[k % len(PERSON_COLOURS)],
                             np.asarray(rig.offsets, np.float64), body, shared)
         outputs = [(first + sk.PELVIS, "translation", np.asarray(rig.root, np.float32))]
         q = np.asarray(rig.rotations, np.float64)
