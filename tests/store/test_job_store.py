@@ -20,6 +20,7 @@ from interplay.settings import Settings
 from interplay.store import JobStore, MotionRepository, Retention, make_engine, new_id
 from interplay.store.jobs import Write, process_gone, process_name
 from interplay.store.models import JobRow, MotionRow
+from tests.helpers.postgres import reset
 
 
 @pytest.fixture(params=["sqlite", "postgres"])
@@ -186,3 +187,20 @@ def test_retention_by_age_deletes_old_motions_and_old_jobs(engine):
     assert repo.enforce_retention() == 1
     assert repo.get(old.id) is None and store.get(job) is None
     assert repo.get(child.id).parent_id is None      # the edit stays, without its parent
+
+
+
+@pytest.mark.parametrize("backend", ["sqlite", "postgres"])
+def test_processes_starting_together_make_the_tables_once(request, tmp_path, backend):
+    """`serve --workers N` and workers start on one database at once: none fails to start."""
+    code = "import sys; from interplay.store import make_engine; make_engine(sys.argv[1])"
+    for i in range(3):
+        url = f"sqlite:///{tmp_path / f'race{i}.db'}"
+        if backend == "postgres":
+            url = request.getfixturevalue("pg_url")
+            reset(url)
+            url = Settings(database_url=url).db_url
+        procs = [subprocess.Popen([sys.executable, "-c", code, url], stderr=subprocess.PIPE,
+                                  text=True) for _ in range(4)]
+        errors = [p.communicate(timeout=120)[1] for p in procs]
+        assert [p.returncode for p in procs] == [0] * 4, errors

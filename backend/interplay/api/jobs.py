@@ -202,6 +202,9 @@ class JobManager:
         await asyncio.to_thread(self._stop_jobs, self._unfinished(), queued_only=False)
         if self.writer is not None:
             await asyncio.to_thread(self.writer.flush, max(0.5, end - time.monotonic()))
+        # Open streams here may follow jobs another process runs (and drains): give them as
+        # long as that process gives its jobs, then they are closed (1012) by the server.
+        end = max(end, deadline + settle)
         while self._streams and time.monotonic() < end:
             await asyncio.sleep(0.02)
 
