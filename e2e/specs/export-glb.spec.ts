@@ -50,7 +50,7 @@ for (const persons of [1, 2] as const) {
     // per person: the pelvis's translation and the 22 joints' rotations
     expect(glb.json.animations[0].channels).toHaveLength(persons * 23);
     const names = glb.json.nodes.map((n) => n.name);
-    for (let p = 0; p < persons; p++) expect(names).toContain(`person${p}_body`);
+    for (let p = 1; p <= persons; p++) expect(names).toContain(`person${p}_body`); // Person 1, Person 2
     await shot(page, `export-glb-${persons}`, info);
   });
 }

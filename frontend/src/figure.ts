@@ -60,14 +60,23 @@ export const useFigure = create<FigureState>()((set) => ({
  * GLTFLoader and the mesh cost a page that shows the mannequin nothing). */
 export type CharacterMaker = (skeleton: Skeleton, person: number, offsets: ArrayLike<number>, quality: QualitySettings) => Character;
 
+/** Whether the character skins on the CPU: in light quality (software WebGL), where the
+ * vertex shader's bone texture reads cost more than skinning ~1,700 vertices in JS
+ * (docs/studio.md); `?skin=gpu|cpu` chooses for profiling. */
+export function cpuSkinning(quality: string, flag: "gpu" | "cpu" | null): boolean {
+  return (flag ?? (quality === "light" ? "cpu" : "gpu")) === "cpu";
+}
+
 /** Read by the render loop: the maker once the mesh is loaded, the rig of the motion on stage. */
 export const figureData: { make: CharacterMaker | null; rig: MotionRig | null } = { make: null, rig: null };
 
 async function loadMaker(): Promise<CharacterMaker> {
   const { Character, loadHumanoid } = await import("./scene/Character");
   // light quality (software WebGL, set by the viewport before it watches): the lighter body
-  const template = await loadHumanoid((debugFlags().detail ?? renderStats.quality) === "light");
-  return (skeleton, person, offsets, quality) => new Character(template, skeleton, person, offsets, quality);
+  const flags = debugFlags();
+  const template = await loadHumanoid((flags.detail ?? renderStats.quality) === "light");
+  const cpu = cpuSkinning(renderStats.quality, flags.skinning);
+  return (skeleton, person, offsets, quality) => new Character(template, skeleton, person, offsets, quality, cpu);
 }
 /** Written by the render loop (for the test hook): what is drawn now, how many characters. */
 export const figureStats: { shown: Figure; characters: number } = { shown: "mannequin", characters: 0 };

@@ -50,6 +50,29 @@ describe("the skinned character (humanoid.glb, cloned per person)", () => {
     c.dispose();
   });
 
+  it("skins on the CPU (light quality) exactly as the vertex shader would", () => {
+    const gpu = make();
+    const cpu = new Character(template, skeleton, 0, person.offsets, QUALITY.light, true);
+    expect(cpu.pickable[0]).not.toBe(cpu.mesh); // a plain mesh is drawn
+    expect((cpu.pickable[0] as THREE.Mesh).isMesh && !(cpu.pickable[0] as THREE.SkinnedMesh).isSkinnedMesh).toBe(true);
+    let worst = 0;
+    for (const [t, next, w] of [[3, 3, 0], [5, 6, 0.4], [9, 9, 0]]) {
+      gpu.setPose(person, t, next, w, new Set(), new Set());
+      cpu.setPose(person, t, next, w, new Set(), new Set());
+      const want = skinned(gpu);
+      const got = (cpu.pickable[0] as THREE.Mesh).geometry.getAttribute("position").array;
+      want.forEach((x, i) => (worst = Math.max(worst, Math.abs(x - got[i]))));
+    }
+    expect(worst).toBeLessThan(1e-5);
+    // and a ray picks on it as on the skinned one
+    cpu.setPose(person, 9, 9, 0, new Set(), new Set());
+    const [x, y, z] = joints[9][J("left_knee")];
+    const hit = new THREE.Raycaster(new THREE.Vector3(x, y + 0.08, z + 3), new THREE.Vector3(0, 0, -1)).intersectObjects(cpu.pickable, false)[0];
+    expect(["left_knee", "left_ankle"]).toContain(skeleton.joints[(hit!.object.userData.vertexJoint as Uint8Array)[hit!.face!.a]]);
+    gpu.dispose();
+    cpu.dispose();
+  });
+
   it("is fitted to the person's bones: in the rest pose every vertex keeps its place relative to its joints", () => {
     // the fixture's person is shorter than the template (pelvis 0.87 vs 0.96 m): the mesh's bind
     // pose moves with the joints, so at rest the feet are still at the ankles, the head at the head

@@ -2,11 +2,13 @@
 // /humanoid.glb): the template loaded once by three's GLTFLoader and cloned per person with
 // SkeletonUtils, its bones fitted to the person's rest offsets (bone positions, inverse bind
 // matrices and the bind-pose vertices, as `humanoid.on_skeleton` does), and posed from the
-// server's rotations (playback/rig.ts). Skinning runs on the GPU in the vertex shader (three's
-// skinning chunks, in both the per-vertex lit and the standard material), so a pose is 22 bone
-// transforms, not a vertex upload. Part colours and highlights are vertex colours, as the
-// mannequin's: a vertex takes the colour of the bone it lies on; contact joints glow green,
-// bones of penetrating parts turn red, the selected / hovered part is painted on top.
+// server's rotations (playback/rig.ts). Full quality skins in the vertex shader (three's
+// skinning chunks, in the standard and the per-vertex lit material); light quality skins its
+// ~850 vertices here at each pose and draws a plain mesh (software WebGL pays more for the
+// shader's bone texture reads; docs/studio.md). Part colours and highlights are vertex
+// colours, as the mannequin's: a vertex takes the colour of the bone it lies on; contact joints
+// glow green, bones of penetrating parts turn red along their middle, the selected / hovered
+// part is painted on top.
 import * as THREE from "three";
 import { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";
 import * as SkeletonUtils from "three/examples/jsm/utils/SkeletonUtils.js";
@@ -33,7 +35,7 @@ const GLOW = [0, 0.7, 0.45, 0.45, 0.45];
  * mannequin paints its bones red and keeps its joint spheres' part colours, the character paints
  * the skin along the middle of a penetrating bone (between these fractions of its length, in
  * the bind pose) and keeps the skin around the joints and of the leaves (head, hands, feet). */
-const BONE_SKIN: [number, number] = [0.2, 0.8];
+const BONE_SKIN: [number, number] = [0.3, 0.7];
 const PAINT = [null, CONTACT_COLOUR, PENETRATION_COLOUR, SELECT_COLOUR, HOVER_COLOUR].map((c) => (c ? new THREE.Color(c) : null));
 const SCRATCH = new THREE.Color();
 
@@ -126,14 +128,28 @@ export class Character {
   private boundsStale = true;
   private readonly q = new Float32Array(NUM_JOINTS * 4);
   private readonly root = new Float32Array(3);
+  /** Skinning on the CPU (light quality): the mesh drawn instead of the skinned one, and what
+   * it is skinned from. */
+  private readonly cpu: {
+    mesh: THREE.Mesh;
+    position: THREE.BufferAttribute;
+    normal: THREE.BufferAttribute;
+    bindPosition: Float32Array;
+    bindNormal: ArrayLike<number>;
+    skinIndex: ArrayLike<number>;
+    skinWeight: ArrayLike<number>;
+  } | null = null;
 
-  /** Person `person` on their own rest offsets (22 × xyz, the rig's). */
+  /** Person `person` on their own rest offsets (22 × xyz, the rig's). `cpuSkinning`: skin the
+   * vertices here at each pose and draw a plain mesh (a software rasteriser pays for the bone
+   * texture reads of GPU skinning per vertex; docs/studio.md), else skin in the vertex shader. */
   constructor(
     template: HumanoidTemplate,
     skeleton: Skeleton,
     readonly person: number,
     offsets: ArrayLike<number>,
     quality: QualitySettings = QUALITY.full,
+    cpuSkinning = false,
   ) {
     this.group = SkeletonUtils.clone(template);
     const body = this.group.getObjectByName(BODY_NODE) as THREE.SkinnedMesh;
@@ -182,6 +198,62 @@ export class Character {
       return new THREE.Matrix4().makeTranslation(-rest[3 * j], -rest[3 * j + 1], -rest[3 * j + 2]);
     });
     body.bind(body.skeleton, new THREE.Matrix4());
+    if (cpuSkinning) {
+      const dynamic = () => new THREE.BufferAttribute(new Float32Array(3 * n), 3).setUsage(THREE.DynamicDrawUsage);
+      const drawn = new THREE.BufferGeometry();
+      drawn.setIndex(geometry.getIndex());
+      const position = dynamic();
+      const normal = dynamic();
+      drawn.setAttribute("position", position);
+      drawn.setAttribute("normal", normal);
+      drawn.setAttribute("color", this.colour);
+      drawn.setAttribute("glow", this.glow);
+      const mesh = new THREE.Mesh(drawn, body.material);
+      mesh.castShadow = body.castShadow;
+      mesh.frustumCulled = false;
+      mesh.userData = body.userData;
+      body.visible = false; // it keeps the bones and the bind pose; the renderer skips it
+      this.group.add(mesh);
+      this.cpu = { mesh, position, normal, bindPosition: fitted, bindNormal: geometry.getAttribute("normal").array, skinIndex, skinWeight };
+    }
+  }
+
+  /** Skin the vertices from the posed bones (CPU skinning): each vertex by its weighted bones'
+   * matrices (bone world × inverse bind; the bind matrix is the identity). No allocation. */
+  private skinOnCpu(): void {
+    const cpu = this.cpu!;
+    this.group.updateMatrixWorld(true);
+    this.mesh.skeleton.update(); // boneMatrices: per bone, world × inverse bind (column-major)
+    const m = this.mesh.skeleton.boneMatrices!;
+    const { bindPosition: p, bindNormal: nb, skinIndex, skinWeight } = cpu;
+    const pos = cpu.position.array as Float32Array;
+    const nrm = cpu.normal.array as Float32Array;
+    const n = pos.length / 3;
+    for (let v = 0; v < n; v++) {
+      // the blended matrix's 3 × 4 part (columns 0–2: rotation, 3: translation)
+      let a0 = 0, a1 = 0, a2 = 0, a4 = 0, a5 = 0, a6 = 0, a8 = 0, a9 = 0, a10 = 0, a12 = 0, a13 = 0, a14 = 0;
+      for (let k = 0; k < 4; k++) {
+        const w = skinWeight[4 * v + k];
+        if (w === 0) continue;
+        const o = 16 * skinIndex[4 * v + k];
+        a0 += w * m[o]; a1 += w * m[o + 1]; a2 += w * m[o + 2];
+        a4 += w * m[o + 4]; a5 += w * m[o + 5]; a6 += w * m[o + 6];
+        a8 += w * m[o + 8]; a9 += w * m[o + 9]; a10 += w * m[o + 10];
+        a12 += w * m[o + 12]; a13 += w * m[o + 13]; a14 += w * m[o + 14];
+      }
+      const i = 3 * v;
+      const x = p[i], y = p[i + 1], z = p[i + 2];
+      pos[i] = a0 * x + a4 * y + a8 * z + a12;
+      pos[i + 1] = a1 * x + a5 * y + a9 * z + a13;
+      pos[i + 2] = a2 * x + a6 * y + a10 * z + a14;
+      const nx = nb[i], ny = nb[i + 1], nz = nb[i + 2];
+      nrm[i] = a0 * nx + a4 * ny + a8 * nz; // the shader normalises
+      nrm[i + 1] = a1 * nx + a5 * ny + a9 * nz;
+      nrm[i + 2] = a2 * nx + a6 * ny + a10 * nz;
+    }
+    cpu.position.needsUpdate = true;
+    cpu.normal.needsUpdate = true;
+    cpu.mesh.geometry.boundingSphere = null; // a ray recomputes it
   }
 
   /** Pose at frame t of the rig, blended by `weight` towards frame `next`; paints the
@@ -192,6 +264,7 @@ export class Character {
     for (let j = 0; j < NUM_JOINTS; j++) bones[j].quaternion.fromArray(q, 4 * j);
     bones[0].position.fromArray(root);
     this.boundsStale = true;
+    if (this.cpu) this.skinOnCpu();
     this.paint(contacts, penetrating);
   }
 
@@ -235,6 +308,7 @@ export class Character {
 
   /** Meshes a pointer ray can hit: the body; userData {person, vertexJoint} as the mannequin's. */
   get pickable(): THREE.Object3D[] {
+    if (this.cpu) return [this.cpu.mesh];
     if (this.boundsStale) {
       this.group.updateMatrixWorld(true);
       this.mesh.computeBoundingSphere(); // from the posed bones (SkinnedMesh), in place
@@ -262,6 +336,7 @@ export class Character {
   }
 
   dispose(): void {
+    this.cpu?.mesh.geometry.dispose();
     this.mesh.geometry.dispose();
     (this.mesh.material as THREE.Material).dispose();
     this.mesh.skeleton.dispose();

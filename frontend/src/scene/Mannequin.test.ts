@@ -72,15 +72,16 @@ describe("Mannequin (one merged mesh)", () => {
 describe("debug flags", () => {
   it("reads ?hide= and ?pixelRatio=, ignoring bad values", () => {
     expect(debugFlags("?hide=ground,people&pixelRatio=0.5")).toEqual({
-      hide: new Set(["ground", "people"]), pixelRatio: 0.5, dynamicResolution: false, alpha: false, tess: null, detail: null,
+      hide: new Set(["ground", "people"]), pixelRatio: 0.5, dynamicResolution: false, alpha: false, tess: null, detail: null, skinning: null,
     });
-    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false, tess: null, detail: null });
-    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false, tess: null, detail: null });
+    expect(debugFlags("?pixelRatio=-1")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false, tess: null, detail: null, skinning: null });
+    expect(debugFlags("")).toEqual({ hide: new Set(), pixelRatio: null, dynamicResolution: true, alpha: false, tess: null, detail: null, skinning: null });
     expect(debugFlags("?tess=8x6,8,6x4,6").tess).toEqual([8, 6, 8, 6, 4, 6]);
     expect(debugFlags("?tess=old").tess).toBe("old");
     expect(debugFlags("?tess=8x6,8").tess).toBeNull();
     expect(debugFlags("?dynres=0&alpha=1")).toMatchObject({ dynamicResolution: false, alpha: true });
     expect(debugFlags("?detail=full").detail).toBe("full");
     expect(debugFlags("?detail=0.3").detail).toBeNull();
+    expect(debugFlags("?skin=gpu").skinning).toBe("gpu");
   });
 });

@@ -45,8 +45,8 @@ const vertexShader = /* glsl */ `
   }
 
   void main() {
-    // a skinned mesh (the character, Character.ts) is skinned here as three's own materials do;
-    // the chunks are empty for the mannequin (no USE_SKINNING)
+    // a skinned mesh (the character skinned on the GPU, Character.ts) is skinned here as three's
+    // own materials do; the chunks are empty for the mannequin (no USE_SKINNING)
     vec3 objectNormal = normal;
     vec3 transformed = position;
     #include <skinbase_vertex>

@@ -5,7 +5,8 @@
 // quality's dynamic resolution off, `?alpha=1` asks for a canvas with an alpha channel, `?tess=8x6,8,6x4,6` sets the body's tessellation (sphere,
 // cylinder sides, thin pieces' sphere and sides; `?tess=old` the light quality's before the
 // thin-piece shapes and welding), `?detail=full|light` the skinned character's mesh (light
-// quality's default: light, lightBody.ts). Nothing in the studio sets them; the perf notes in
+// quality's default: light, lightBody.ts), `?skin=gpu|cpu` where it is skinned (light quality's
+// default: cpu, figure.ts). Nothing in the studio sets them; the perf notes in
 // docs/studio.md do.
 
 export interface DebugFlags {
@@ -17,6 +18,8 @@ export interface DebugFlags {
   tess: "old" | number[] | null;
   /** The character's mesh: the full one or the light level of detail (null: by quality). */
   detail: "full" | "light" | null;
+  /** Where the character is skinned (null: by quality). */
+  skinning: "gpu" | "cpu" | null;
 }
 
 export function debugFlags(search: string = typeof window === "undefined" ? "" : window.location.search): DebugFlags {
@@ -29,5 +32,7 @@ export function debugFlags(search: string = typeof window === "undefined" ? "" :
   const tess = t === "old" ? "old" : nums.length === 6 && nums.every((n) => Number.isInteger(n) && n >= 2 && n <= 64) ? nums : null;
   const d = q.get("detail");
   const detail = d === "full" || d === "light" ? d : null;
-  return { hide, pixelRatio, dynamicResolution: pixelRatio === null && q.get("dynres") !== "0", alpha: q.get("alpha") === "1", tess, detail };
+  const k = q.get("skin");
+  const skinning = k === "gpu" || k === "cpu" ? k : null;
+  return { hide, pixelRatio, dynamicResolution: pixelRatio === null && q.get("dynres") !== "0", alpha: q.get("alpha") === "1", tess, detail, skinning };
 }
