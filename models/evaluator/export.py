@@ -74,7 +74,9 @@ def export(ckpt_path: str | Path, out: str | Path) -> dict:
     """Write the runtime files into `out`; returns the checkpoint (for the card)."""
     model, ckpt = load_checkpoint(ckpt_path)
     out = Path(out)
-    export_towers(model, out)
+    # The sources it was trained on: `interplay eval` measures on their test split only.
+    trained = (ckpt.get("data") or {}).get("training_data") or {}
+    export_towers(model, out, **({"sources": sorted(trained["sources"])} if trained else {}))
     n = ckpt["normalizer"]
     Normalizer(np.asarray(n["mean"]), np.asarray(n["std"]),
                {k: v for k, v in n.items() if k not in ("mean", "std")}).save(out / "normalizer.npz")

@@ -87,7 +87,7 @@ def test_embeddings():
     from interplay.motion.clip import default_clips
     from interplay.review.evaluator import load_evaluator
     ev = load_evaluator()
-    samples = split_samples(default_clips(), "test")
+    samples = split_samples(default_clips(), "test", sources=ev.sources)   # what it was trained on
     texts = [s.text for s in samples]
     return ev.embed_motion([s.joints for s in samples]), ev.embed_text(texts), texts
 

@@ -124,14 +124,15 @@ def run_eval(rows=ROW_NAMES, cfg: EvalConfig = EvalConfig(), clips=None, evaluat
     t0 = time.time()
     clips = clips if clips is not None else default_clips()
     evaluator = evaluator or load_evaluator()
-    samples = split_samples(clips, cfg.split)
+    samples = split_samples(clips, cfg.split, sources=evaluator.sources)
     real_emb = evaluator.embed_motion([s.joints for s in samples])
     text_emb = evaluator.embed_text([s.text for s in samples])
     report: dict[str, Any] = {
         "config": asdict(cfg), "rows": {}, "skipped": {}, "edits": {},
         "test_set": {"samples": len(samples), "texts": len({s.text for s in samples}),
                      "clips": len({s.clip for s in samples}),
-                     "frames": int(sum(s.frames for s in samples))}}
+                     "frames": int(sum(s.frames for s in samples)),
+                     "sources": sorted({c.source for c in clips if c.id in {s.clip for s in samples}})}}
     for name in rows:
         t = time.time()
         try:

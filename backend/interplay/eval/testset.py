@@ -45,14 +45,16 @@ def person_prompt(clip: Clip) -> str:
 
 
 def split_samples(clips, split: str = "test", max_frames: int = MAX_FRAMES,
-                  include_synthetic: bool = False) -> list[Sample]:
+                  include_synthetic: bool = False, sources=None) -> list[Sample]:
     """Every person-window of the clips in `split` (synthetic composed pairs left out unless
-    asked: they are not real reference motion)."""
+    asked: they are not real reference motion), of the given processed `sources` only (None:
+    all)."""
     if split not in ("train", "val", "test"):
         raise ValueError(f"split must be train, val or test, got {split!r}")
     out = []
     for c in clips:
-        if c.split != split or (c.synthetic and not include_synthetic):
+        if c.split != split or (c.synthetic and not include_synthetic) \
+                or (sources is not None and c.source not in sources):
             continue
         text = person_prompt(c)
         for i, person in enumerate(c.people):

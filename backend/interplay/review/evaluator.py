@@ -87,6 +87,10 @@ class EvaluatorRuntime:
         self.text_proj = {k: np.asarray(v, dtype=np.float32) for k, v in text_proj.items()}
         self.normalizer = normalizer
         self.config = config
+        # The processed sources the weights were trained on (None: not recorded, all of them):
+        # measurements made with this evaluator use only their clips.
+        self.sources: tuple[str, ...] | None = (tuple(config["sources"]) if config.get("sources")
+                                                else None)
         self.max_frames = int(config["max_frames"])
         self.patch = int(config["patch"])
         self.dim = int(config["embed_dim"])

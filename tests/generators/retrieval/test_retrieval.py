@@ -6,6 +6,7 @@ import pytest
 from interplay.generators.base import Request
 from interplay.generators.router import load_generator
 from interplay.motion import skeleton as sk
+from interplay.motion.checks.measures import pelvis_pops
 from interplay.motion.kinematics import facing_direction
 
 SEEDS = range(4)
@@ -30,10 +31,6 @@ def _seams(plan):
                 out.append(pos)
             pos += p["end"] - p["start"]
     return out
-
-
-def _steps(joints):
-    return np.linalg.norm(np.diff(joints[:, sk.PELVIS], axis=0), axis=1)   # step into frame t+1
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -88,18 +85,17 @@ def test_pieces_join_without_jumps_and_bones_keep_their_length(gen, prompt, pers
     seams = 0
     for seed in SEEDS:
         m = gen.generate(Request(prompt, persons, seconds, seed=seed))
-        at = np.array(_seams(m.plan)) - 1
+        at = np.array(_seams(m.plan), dtype=int)
         seams += len(at)
         for p in m.people:
             bones = sk.bone_lengths(p)
             assert np.ptp(bones, axis=0).max() < 1e-4
-            step = _steps(p)
             if len(at):
-                inner = np.delete(step, at)
-                # No seam moves the pelvis more than 10 cm, or more than the motion's own
-                # fastest step elsewhere (brisk captured walks reach 10 cm at 20 fps).
-                assert step[at].max() < max(0.10, inner.max() + 0.01)
-                assert step[at].max() < 0.12
+                # No seam pops: the pelvis's step into a piece's first frame departs by less
+                # than 5 cm from the steps around it (the benchmark's pop measure). A seam may
+                # be fast — a jump cut at take-off carries on at 3.5 m/s — but not sudden.
+                pops = pelvis_pops(p)[at]
+                assert pops.max() < 0.05, (seed, at[np.argmax(pops)], pops.max())
     assert seams > 0
 
 
