@@ -34,12 +34,13 @@ test("Cancel stops a long generation: idle studio with a message, the API job ca
   expect(h.framesReceived).toBe(0);
   await shot(page, "k-cancelled", info);
 
-  // the API: the job ended cancelled ("failed", its stream's last event says so), no motion stored
+  // the API: the job ended cancelled (its stream's last event says so), no motion stored, and
+  // its motion id says why instead of "not found"
   const job = await (await page.request.get(`/api/jobs/${jobId}`)).json();
-  expect(job.status).toBe("failed");
+  expect(job.status).toBe("cancelled");
   const again = await (await page.request.delete(`/api/jobs/${jobId}`)).json();
-  expect(again).toMatchObject({ cancelled: true, status: "failed" });
-  expect((await page.request.get(`/api/motions/${job.motion_id}`)).status()).toBe(404);
+  expect(again).toMatchObject({ cancelled: true, status: "cancelled" });
+  expect((await page.request.get(`/api/motions/${job.motion_id}`)).status()).toBe(409);
 
   // and the studio works on: the next generation plays
   await page.getByTestId("persons-1").click();

@@ -131,7 +131,7 @@ test("Cancel while B is reacting goes back to the actor alone", async ({ page },
   await expect(page.getByTestId("version-label")).toHaveText("v1 / 1");
   await shot(page, "r-cancelled", info);
   const job = await (await page.request.get(`/api/jobs/${jobId}`)).json();
-  expect(job.status).toBe("failed");
-  expect((await page.request.get(`/api/motions/${job.motion_id}`)).status()).toBe(404);
+  expect(job.status).toBe("cancelled");
+  expect((await page.request.get(`/api/motions/${job.motion_id}`)).status()).toBe(409);
   for (const id of blockers) await page.request.delete(`/api/jobs/${id}`); // free the server
 });
