@@ -185,3 +185,29 @@ def test_jobs_and_edits_share_one_queue(settings):
                 time.sleep(0.05)
         r = client.post(f"/api/motions/{mid}/edit", json={"prompt": "raises the left arm"})
         assert r.status_code == 201, r.text
+
+
+def test_segment_reruns_share_the_job_queue(settings):
+    """A segment re-run is a job too: with the queue full it answers 429 with Retry-After
+    (it used to run in the request thread, outside every limit)."""
+    from tests.api.test_jobs import BlockingGenerator
+
+    gen = BlockingGenerator()
+    with TestClient(create_app(settings.model_copy(update={"max_pending_jobs": 2}),
+                               generator=gen)) as client:
+        joints = np.repeat(rest_joints()[None], 40, axis=0)
+        plan = {"segments": [{"index": 0, "start": 0, "end": 20, "prompt": "a person stands"},
+                             {"index": 1, "start": 20, "end": 40, "prompt": "a person waves"}]}
+        mid = client.app.state.repo.create(prompt="a person stands, then waves", people=[joints],
+                                           seconds=2.0, plan=plan).id
+        jobs = [client.post("/api/jobs", json={"prompt": "a person walks", "seconds": 1})
+                for _ in range(2)]
+        assert [r.status_code for r in jobs] == [201, 201]
+        r = client.post(f"/api/motions/{mid}/segments/1/rerun", json={"seed": 3})
+        assert r.status_code == 429 and r.headers["Retry-After"].isdigit(), r.text
+        gen.release.set()
+        for j in jobs:
+            deadline = time.monotonic() + 30
+            while client.get(f"/api/jobs/{j.json()['job_id']}").json()["status"] != "done":
+                assert time.monotonic() < deadline
+                time.sleep(0.05)

@@ -61,11 +61,12 @@ class JobSpec:
     seconds: float
     seed: int | None                                            # None: an edit's random seed
     trajectory: dict | None = field(default=None, hash=False)   # {person, points | shape …}
-    mode: str = "generate"                                      # "generate" | "react" | "edit"
+    mode: str = "generate"                          # "generate" | "react" | "edit" | "rerun"
     actor_motion_id: str | None = None
     parent_id: str | None = None                                # edit: the motion edited
     part: str | None = None                                     # edit: the body part
     frames: list[int] | None = field(default=None, hash=False)  # edit: [a, b)
+    segment: int | None = None                                  # rerun: the plan segment
     client_id: str | None = None    # the browser that asked (X-Interplay-Client), for its list
 
     @property

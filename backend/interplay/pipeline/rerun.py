@@ -152,7 +152,8 @@ def generate_segment(generator: Generator, prompt: str, persons: int, frames: in
 
 
 def rerun_stored(repo: MotionRepository, generator: Generator, parent: StoredMotion,
-                 index: int, seed: int, client_id: str | None = None) -> StoredMotion:
+                 index: int, seed: int, client_id: str | None = None,
+                 id: str | None = None) -> StoredMotion:
     """Re-run segment `index` of `parent` with `seed` and store the result as a new version
     (parent_id = parent). Its plan is the parent's with `{"kind": "rerun_segment", …}`
     appended to `edits`; its review the parent's without that segment (whose rounds no longer
@@ -174,7 +175,7 @@ def rerun_stored(repo: MotionRepository, generator: Generator, parent: StoredMot
     highlights = highlight_lists(people, 0, len(people))
     edit = {"mode": "rerun", "segment": index, "part": None, "prompt": prompt,
             "frames": [a, b], "trajectory": None, "seed": seed}
-    return repo.create(prompt=parent.prompt, people=people, seconds=parent.seconds, seed=seed,
+    return repo.create(id=id, prompt=parent.prompt, people=people, seconds=parent.seconds, seed=seed,
                        plan=plain(plan), metrics=metrics, highlights=highlights,
                        parent_id=parent.id, review=plain(review), edit=plain(edit),
                        client_id=client_id)

@@ -10,7 +10,7 @@ from collections.abc import Callable
 
 from interplay.api.events import ErrorEvent
 from interplay.api.queue.live import LiveJob
-from interplay.api.runners.edit import edit_job
+from interplay.api.runners.edit import edit_job, rerun_job
 from interplay.api.runners.generate import GenerateRunner
 from interplay.api.runners.react import react_job
 from interplay.pipeline.orchestrator import StageError
@@ -30,6 +30,8 @@ def run_job(job: LiveJob, generator, repo, closing: Callable[[], bool]) -> None:
             react_job(job, repo)
         elif job.spec.mode == "edit":
             edit_job(job, generator, repo)
+        elif job.spec.mode == "rerun":
+            rerun_job(job, generator, repo)
         else:
             GenerateRunner(job, generator, repo, stop).run()
         if not job.ended:

@@ -1,5 +1,7 @@
-"""The edit job (`POST /api/motions/{id}/edit`): `pipeline.editing.edit_stored` run in a job
-worker, so edits wait in the same queue, under the same limits, as generation.
+"""The edit jobs: a part edit (`POST /api/motions/{id}/edit`, `pipeline.editing.edit_stored`)
+and a segment re-run (`POST /api/motions/{id}/segments/{index}/rerun`,
+`pipeline.rerun.rerun_stored`), run in a job worker, so they wait in the same queue, under the
+same limits, as generation.
 
 Its stream is one event: `done` (the new motion is stored under the job's motion id) or
 `error`, with the HTTP status the request answers in the job's result (422 for a bad edit, 503
@@ -12,6 +14,7 @@ import logging
 from interplay.api.events import DoneEvent, ErrorEvent
 from interplay.generators.base import EditUnavailable
 from interplay.pipeline.editing import edit_stored
+from interplay.pipeline.rerun import rerun_stored
 from interplay.pipeline.segment_source import Cancelled
 
 log = logging.getLogger(__name__)
@@ -37,6 +40,26 @@ def edit_job(job, generator, repo) -> None:
         log.exception("edit of motion %s failed", spec.parent_id)
         return _fail(job, 503, f"the edit failed: {type(exc).__name__}: {exc}")
     job.push(DoneEvent(motion_id=edited.id, frames=edited.frames).dump())
+
+
+def rerun_job(job, generator, repo) -> None:
+    """Run `job` (JobSpec mode "rerun"): store the motion with segment `spec.segment` generated
+    again with `spec.seed`, push `done` or `error`."""
+    spec = job.spec
+    if job.cancelled:
+        raise Cancelled()
+    parent = repo.get(spec.parent_id)
+    if parent is None:
+        return _fail(job, 404, f"no motion {spec.parent_id!r} (unknown or malformed id)")
+    try:
+        made = rerun_stored(repo, generator, parent, int(spec.segment or 0), int(spec.seed or 0),
+                            client_id=spec.client_id, id=job.motion_id)
+    except ValueError as exc:
+        return _fail(job, 422, str(exc))
+    except Exception as exc:  # a model failure is reported, never a bare 500
+        log.exception("re-run of segment %s of motion %s failed", spec.segment, spec.parent_id)
+        return _fail(job, 503, f"the re-run failed: {type(exc).__name__}: {exc}")
+    job.push(DoneEvent(motion_id=made.id, frames=made.frames).dump())
 
 
 def _fail(job, status: int, message: str) -> None:
