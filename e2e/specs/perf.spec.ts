@@ -4,9 +4,10 @@
 // asserted, since a shared CI machine's load decides them. Only behaviour is asserted.
 // Playwright's trace recording is off here: its screencast captures every frame the page
 // produces, which cost about a third of the light frame rate (41.7 vs 59.6 fps, quiet machine).
-// Last recorded (docs/studio.md, 2026-12-01, lighter bodies: 918 vertices per person): light
-// 59.7 fps, 18.3 ms CPU per frame, 0.4 % of refresh intervals over 20 ms (this spec alone, load
-// 1.7–3.1); 54.5 fps, 8.3 % in the whole suite (load 4.5); full 8.8 fps. FCP 528–540 ms.
+// Last recorded (docs/studio.md, 2026-12-02, this spec alone, load 1.8–2.6): light 60.0 fps,
+// 12.8 ms CPU per frame, 0 % of refresh intervals over 20 ms; the skinned character
+// (`?figure=character`) 60.0 fps, 13.3 ms, 0 %; full 14.0 fps; FCP 440 ms. Whole suite
+// (2026-12-01, before the character): 54.5 fps, 8.3 % over 20 ms (load 4.5).
 import { expect, test, type Page } from "@playwright/test";
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { loadavg } from "node:os";
