@@ -13,9 +13,10 @@ from fastapi import APIRouter, HTTPException, Request
 
 from interplay.api.deps import ClientDep, JobsDep, RepoDep
 from interplay.api.deps import generator as loaded_generator
-from interplay.api.jobs import JobSpec, QueueFull, Unavailable, motion_missing
+from interplay.api.jobs import JobManager, JobSpec, QueueFull, Unavailable, motion_missing
 from interplay.api.schemas import ERRORS, EditCreate, MotionOut
 from interplay.pipeline.motion_json import motion_payload
+from interplay.store import MotionRepository, StoredMotion
 
 router = APIRouter(prefix="/api", tags=["motions"])
 
@@ -37,6 +38,14 @@ async def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, jobs: Job
     spec = JobSpec(mode="edit", prompt=body.prompt, persons=1, seconds=0.0, seed=body.seed,
                    trajectory=body.trajectory.plain() if body.trajectory else None,
                    parent_id=motion_id, part=body.part, frames=body.frames, client_id=client)
+    return motion_payload(await run_to_motion(jobs, repo, spec, generator, "the edit"))
+
+
+async def run_to_motion(jobs: JobManager, repo: MotionRepository, spec: JobSpec, generator,
+                        what: str) -> StoredMotion:
+    """Queue a job that makes one stored motion (an edit, a re-run), wait for it, and give the
+    motion; the job's failure as an HTTPException with its status (429 + Retry-After when the
+    queue is full)."""
     try:
         job = await anyio.to_thread.run_sync(jobs.submit, spec, generator)
     except QueueFull as exc:
@@ -46,8 +55,8 @@ async def edit_motion(motion_id: str, body: EditCreate, repo: RepoDep, jobs: Job
     end = await jobs.wait(job.id)
     if end is None or end.status != "done":
         status = int((end.result or {}).get("http_status", 503)) if end else 503
-        raise HTTPException(status, (end.reason if end else None) or "the edit failed")
-    edited = await anyio.to_thread.run_sync(repo.get, job.motion_id)
-    if edited is None:
-        raise HTTPException(503, "the edited motion was not stored")
-    return motion_payload(edited)
+        raise HTTPException(status, (end.reason if end else None) or f"{what} failed")
+    made = await anyio.to_thread.run_sync(repo.get, job.motion_id)
+    if made is None:
+        raise HTTPException(503, f"the motion of {what} was not stored")
+    return made

@@ -16,7 +16,8 @@ from fastapi import APIRouter, Body, HTTPException, Path, Request
 
 from interplay.api.deps import ClientDep, JobsDep, RepoDep
 from interplay.api.deps import generator as loaded_generator
-from interplay.api.jobs import JobSpec, QueueFull, Unavailable, motion_missing
+from interplay.api.jobs import JobSpec, motion_missing
+from interplay.api.routes.edits import run_to_motion
 from interplay.api.schemas import ERRORS, MotionOut, SegmentRerun
 from interplay.generators.base import random_seed
 from interplay.pipeline.motion_json import motion_payload
@@ -46,17 +47,4 @@ async def rerun_segment(motion_id: str, index: Annotated[int, Path(ge=0, le=99)]
     seed = body.seed if body is not None and body.seed is not None else random_seed()
     spec = JobSpec(mode="rerun", prompt=None, persons=parent.persons, seconds=0.0, seed=seed,
                    parent_id=motion_id, segment=index, client_id=client)
-    try:
-        job = await anyio.to_thread.run_sync(jobs.submit, spec, generator)
-    except QueueFull as exc:
-        raise HTTPException(429, str(exc), headers={"Retry-After": str(exc.retry_after)}) from None
-    except Unavailable as exc:
-        raise HTTPException(503, str(exc)) from None
-    end = await jobs.wait(job.id)
-    if end is None or end.status != "done":
-        status = int((end.result or {}).get("http_status", 503)) if end else 503
-        raise HTTPException(status, (end.reason if end else None) or "the re-run failed")
-    made = await anyio.to_thread.run_sync(repo.get, job.motion_id)
-    if made is None:
-        raise HTTPException(503, "the re-run motion was not stored")
-    return motion_payload(made)
+    return motion_payload(await run_to_motion(jobs, repo, spec, generator, "the re-run"))

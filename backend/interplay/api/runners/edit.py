@@ -22,12 +22,9 @@ log = logging.getLogger(__name__)
 
 def edit_job(job, generator, repo) -> None:
     """Run `job` (JobSpec mode "edit"): store the edited motion, push `done` or `error`."""
-    spec = job.spec
-    if job.cancelled:
-        raise Cancelled()
-    parent = repo.get(spec.parent_id)
+    spec, parent = job.spec, _parent(job, repo)
     if parent is None:
-        return _fail(job, 404, f"no motion {spec.parent_id!r} (unknown or malformed id)")
+        return
     try:
         edited = edit_stored(repo, generator, parent, spec.part, spec.prompt, spec.frames,
                              spec.seed, spec.trajectory, id=job.motion_id,
@@ -45,12 +42,9 @@ def edit_job(job, generator, repo) -> None:
 def rerun_job(job, generator, repo) -> None:
     """Run `job` (JobSpec mode "rerun"): store the motion with segment `spec.segment` generated
     again with `spec.seed`, push `done` or `error`."""
-    spec = job.spec
-    if job.cancelled:
-        raise Cancelled()
-    parent = repo.get(spec.parent_id)
+    spec, parent = job.spec, _parent(job, repo)
     if parent is None:
-        return _fail(job, 404, f"no motion {spec.parent_id!r} (unknown or malformed id)")
+        return
     try:
         made = rerun_stored(repo, generator, parent, int(spec.segment or 0), int(spec.seed or 0),
                             client_id=spec.client_id, id=job.motion_id)
@@ -60,6 +54,16 @@ def rerun_job(job, generator, repo) -> None:
         log.exception("re-run of segment %s of motion %s failed", spec.segment, spec.parent_id)
         return _fail(job, 503, f"the re-run failed: {type(exc).__name__}: {exc}")
     job.push(DoneEvent(motion_id=made.id, frames=made.frames).dump())
+
+
+def _parent(job, repo):
+    """The stored motion the job changes, or None with the job failed (404)."""
+    if job.cancelled:
+        raise Cancelled()
+    parent = repo.get(job.spec.parent_id)
+    if parent is None:
+        _fail(job, 404, f"no motion {job.spec.parent_id!r} (unknown or malformed id)")
+    return parent
 
 
 def _fail(job, status: int, message: str) -> None:
