@@ -180,9 +180,10 @@ def _review_segment(generator: Generator, source: SegmentSource, seg: Generation
             calls.append(other)
             return frames
         if not spam or source.persons != 1 or not isinstance(generator, Editor):
-            why = generator.reason if isinstance(generator, Editor) else None
-            raise CannotApply(f"{kind} needs the SPAM model for one person "
-                              f"({why or 'not loaded'})")
+            why = ("this segment has two people" if source.persons != 1
+                   else (generator.reason if isinstance(generator, Editor) else None)
+                   or "not loaded")
+            raise CannotApply(f"{kind} needs the SPAM model for one person ({why})")
         full = source.people[0, :source.written].copy()
         full[a:b] = people[0]
         span = (a, b)
