@@ -163,31 +163,39 @@ def build_bandai(src: Path) -> list[Clip]:
     return clips
 
 
-def build_cmu_asfamc(src: Path) -> list[Clip]:
-    """CMU's original Acclaim trials; a trial cmu-bvh already holds is left out (one capture
-    once, so it cannot sit in two splits)."""
-    from interplay.motion.retarget.cmu_acclaim import load_cmu_acclaim, trial_of
-    from interplay.motion.retarget.cmu_daz import read_cmu_index
-
-    index = read_cmu_index(src / "cmu-index" / "cmu_index.csv")
-    have = _cmu_trials(src, "cmu-bvh")
+def _cmu_retargets(src: Path, source: str, paths, trial_of, load, index: dict,
+                   have: dict[tuple[int, int], str]) -> list[Clip]:
+    """The clips of a source of CMU trials (`load(path)` → joints, offsets, meta), labelled by
+    CMU's `index`; a trial another source already holds (`have`) is left out, so one capture
+    is kept once and cannot sit in two splits."""
     clips = []
-    for path in sorted((src / "cmu-asfamc").glob("*/*.amc")):
-        rel = f"cmu-asfamc/{path.parent.name}/{path.name}"
+    for path in paths:
+        rel = str(path.relative_to(src))
         subject, trial = trial_of(path)
         if (subject, trial) in have:
             _skip(rel, [f"the same CMU trial as {have[subject, trial]}, which the set keeps"])
             continue
         description, index_fps = index.get((subject, trial), ("unknown", 120))
-        joints, offsets, meta = load_cmu_acclaim(path)
+        joints, offsets, meta = load(path)
         meta.update({"file": rel, "subject": subject, "trial": trial, "index_fps": index_fps})
         if meta["defects"]:
             _skip(rel, meta["defects"])
             continue
-        clips.append(Clip(id=f"cmu-asfamc:{subject:02d}_{trial:02d}", source="cmu-asfamc",
+        clips.append(Clip(id=f"{source}:{subject:02d}_{trial:02d}", source=source,
                           people=[joints], offsets=[offsets], label=description,
                           prompt=cmu_prompt(description), licence=CMU.name, meta=meta))
     return clips
+
+
+def build_cmu_asfamc(src: Path) -> list[Clip]:
+    """CMU's original Acclaim trials; a trial cmu-bvh already holds is left out."""
+    from interplay.motion.retarget.cmu_acclaim import load_cmu_acclaim, trial_of
+    from interplay.motion.retarget.cmu_daz import read_cmu_index
+
+    return _cmu_retargets(src, "cmu-asfamc", sorted((src / "cmu-asfamc").glob("*/*.amc")),
+                          trial_of, load_cmu_acclaim,
+                          read_cmu_index(src / "cmu-index" / "cmu_index.csv"),
+                          _cmu_trials(src, "cmu-bvh"))
 
 
 def build_cmu_iclone(src: Path) -> list[Clip]:
@@ -195,25 +203,10 @@ def build_cmu_iclone(src: Path) -> list[Clip]:
     or cmu-asfamc already holds is left out."""
     from interplay.motion.retarget.cmu_iclone import load_cmu_iclone, read_cmu_index, trial_of
 
-    index = read_cmu_index(src / "cmu-iclone" / "CMU data.csv")
-    have = {**_cmu_trials(src, "cmu-asfamc"), **_cmu_trials(src, "cmu-bvh")}
-    clips = []
-    for path in sorted((src / "cmu-iclone" / "subjects").glob("*/*.bvh")):
-        rel = f"cmu-iclone/subjects/{path.parent.name}/{path.name}"
-        subject, trial = trial_of(path)
-        if (subject, trial) in have:
-            _skip(rel, [f"the same CMU trial as {have[subject, trial]}, which the set keeps"])
-            continue
-        description, index_fps = index.get((subject, trial), ("unknown", 120))
-        joints, offsets, meta = load_cmu_iclone(path)
-        meta.update({"file": rel, "subject": subject, "trial": trial, "index_fps": index_fps})
-        if meta["defects"]:
-            _skip(rel, meta["defects"])
-            continue
-        clips.append(Clip(id=f"cmu-iclone:{subject:02d}_{trial:02d}", source="cmu-iclone",
-                          people=[joints], offsets=[offsets], label=description,
-                          prompt=cmu_prompt(description), licence=CMU.name, meta=meta))
-    return clips
+    return _cmu_retargets(src, "cmu-iclone",
+                          sorted((src / "cmu-iclone" / "subjects").glob("*/*.bvh")), trial_of,
+                          load_cmu_iclone, read_cmu_index(src / "cmu-iclone" / "CMU data.csv"),
+                          {**_cmu_trials(src, "cmu-asfamc"), **_cmu_trials(src, "cmu-bvh")})
 
 
 def build_deepmimic(src: Path) -> list[Clip]:

@@ -61,8 +61,8 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.formats.bvh import read_bvh
 from interplay.motion.kinematics import fit_offsets, fit_to_skeleton, resample
-from interplay.motion.retarget import JointSource, canonicalize, map_joints
-from interplay.motion.retarget.checks import check_contact, decide_rate
+from interplay.motion.retarget import JointSource, map_joints
+from interplay.motion.retarget.checks import decide_rate, settle
 
 BANDAI_FPS = 30.0
 FPS_CANDIDATES = (30.0, 60.0)
@@ -241,10 +241,7 @@ def load_bandai(path: str | Path, plausible_body: bool = True) -> tuple[np.ndarr
     meta["fit_error_mean_mm"] = round(float(err.mean()) * 1000, 2)
     meta["fit_error_legs_max_mm"] = round(float(err[:, legs].max()) * 1000, 2)
     meta["plausible_body"] = plausible_body
-    (out,), transform = canonicalize([fitted])
-    meta["canonical"] = transform
-    check_contact(out, meta)
-    return out, offsets, meta
+    return settle(fitted, meta), offsets, meta
 
 
 __all__ = ["BANDAI_FPS", "CONTENTS", "STYLES", "JOINT_MAP", "UPPER_BODY", "bandai_prompt",

@@ -25,6 +25,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from interplay.motion import skeleton as sk
+from interplay.motion.kinematics import canonicalize
 from interplay.motion.metrics import centre_of_mass, person_metrics
 from interplay.motion.retarget.frame_rate import GRAVITY_RANGE, estimate_true_fps
 
@@ -141,3 +142,19 @@ def check_contact(joints: np.ndarray, meta: dict) -> None:
     report = contact_report(joints)
     meta["contact_check"] = report
     meta.setdefault("defects", []).extend(contact_defects(report))
+
+
+def record_fit(fitted: np.ndarray, raw: np.ndarray, meta: dict) -> None:
+    """The fit error of joints on fixed bones against the mapped capture (mean and max, mm)."""
+    err = np.linalg.norm(fitted - raw, axis=-1)                   # (T, 22) metres
+    meta["fit_error_mean_mm"] = round(float(err.mean()) * 1000, 2)
+    meta["fit_error_max_mm"] = round(float(err.max()) * 1000, 2)
+
+
+def settle(fitted: np.ndarray, meta: dict) -> np.ndarray:
+    """One person's fitted joints in the canonical frame (its transform in meta["canonical"]),
+    their foot contact checked (`check_contact`)."""
+    (joints,), transform = canonicalize([fitted])
+    meta["canonical"] = transform
+    check_contact(joints, meta)
+    return joints

@@ -23,8 +23,8 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion.formats.acclaim import load_acclaim
-from interplay.motion.retarget import canonicalize, map_joints, to_smpl22
-from interplay.motion.retarget.checks import check_contact, decide_rate
+from interplay.motion.retarget import map_joints, to_smpl22
+from interplay.motion.retarget.checks import decide_rate, record_fit, settle
 from interplay.motion.retarget.hdm05 import JOINT_MAP
 
 CMU_FPS = 120.0
@@ -63,13 +63,8 @@ def load_cmu_acclaim(amc_path: str | Path, asf_path: str | Path | None = None) -
                   "metres_per_unit": unit, "defects": []}
     fps = decide_rate(map_joints(named, JOINT_MAP) * unit, CMU_FPS, FPS_CANDIDATES, meta)
     fitted, offsets, raw = to_smpl22(named, JOINT_MAP, fps=fps, scale=unit)
-    err = np.linalg.norm(fitted - raw, axis=-1)
-    meta["fit_error_mean_mm"] = round(float(err.mean()) * 1000, 2)
-    meta["fit_error_max_mm"] = round(float(err.max()) * 1000, 2)
-    (joints,), transform = canonicalize([fitted])
-    meta["canonical"] = transform
-    check_contact(joints, meta)
-    return joints, offsets, meta
+    record_fit(fitted, raw, meta)
+    return settle(fitted, meta), offsets, meta
 
 
 __all__ = ["CMU_FPS", "trial_of", "find_asf", "load_cmu_acclaim"]

@@ -39,6 +39,7 @@ import numpy as np
 
 from interplay.motion.formats.bvh import Bvh, read_bvh
 from interplay.motion.retarget import JointSource, canonicalize, map_joints, to_smpl22
+from interplay.motion.retarget.checks import record_fit
 from interplay.motion.retarget.cmu_index import read_cmu_index
 from interplay.motion.retarget.frame_rate import (
     SALSA_FPS,
@@ -145,9 +146,7 @@ def _retarget(named: dict[str, np.ndarray], joint_map: dict[str, JointSource], f
     """Named native positions (lead-in already cut) → (fitted joints at 20 fps, offsets);
     records the fit error (raw mapped vs fitted joints) in meta."""
     fitted, offsets, raw = to_smpl22(named, joint_map, fps)
-    err = np.linalg.norm(fitted - raw, axis=-1)                   # (T, 22) metres
-    meta["fit_error_mean_mm"] = round(float(err.mean()) * 1000, 2)
-    meta["fit_error_max_mm"] = round(float(err.max()) * 1000, 2)
+    record_fit(fitted, raw, meta)
     return fitted, offsets
 
 

@@ -42,8 +42,8 @@ import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.formats.bvh import read_bvh
-from interplay.motion.retarget import JointSource, canonicalize, map_joints, to_smpl22
-from interplay.motion.retarget.checks import check_contact, decide_rate
+from interplay.motion.retarget import JointSource, map_joints, to_smpl22
+from interplay.motion.retarget.checks import decide_rate, record_fit, settle
 from interplay.motion.retarget.cmu_index import read_cmu_index
 from interplay.motion.retarget.frame_rate import lead_in_frames
 
@@ -115,13 +115,8 @@ def load_cmu_iclone(path: str | Path) -> tuple[np.ndarray, np.ndarray, dict]:
                   "unit_m": CENTIMETRE, "tpose_frames_dropped": cut, "root": bvh.names[0], "defects": []}
     fps = decide_rate(native[cut:], ICLONE_FPS, FPS_CANDIDATES, meta, keep_stated=True)
     fitted, offsets, raw = to_smpl22(named, JOINT_MAP, fps, scale=CENTIMETRE)
-    err = np.linalg.norm(fitted - raw, axis=-1)
-    meta["fit_error_mean_mm"] = round(float(err.mean()) * 1000, 2)
-    meta["fit_error_max_mm"] = round(float(err.max()) * 1000, 2)
-    (joints,), transform = canonicalize([fitted])
-    meta["canonical"] = transform
-    check_contact(joints, meta)
-    return joints, offsets, meta
+    record_fit(fitted, raw, meta)
+    return settle(fitted, meta), offsets, meta
 
 
 __all__ = ["ICLONE_FPS", "JOINT_MAP", "is_tpose", "tpose_lead_in", "trial_of", "load_cmu_iclone",

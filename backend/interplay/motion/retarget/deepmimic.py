@@ -47,8 +47,8 @@ import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import fit_to_skeleton
-from interplay.motion.retarget import JointSource, canonicalize, map_joints
-from interplay.motion.retarget.checks import check_contact, decide_rate
+from interplay.motion.retarget import JointSource, map_joints
+from interplay.motion.retarget.checks import decide_rate, record_fit, settle
 from interplay.motion.rotations import axis_rotation, quat_to_matrix
 
 VALUES_PER_FRAME = 44
@@ -231,13 +231,8 @@ def load_deepmimic(path: str | Path, character: str | Path | None = None) -> tup
     times = np.concatenate([[0.0], np.cumsum(durations)]) * (stated / fps)
     joints = resample_times(native, times)
     fitted, offsets = fit_to_skeleton(joints)
-    err = np.linalg.norm(fitted - joints, axis=-1)
-    meta["fit_error_mean_mm"] = round(float(err.mean()) * 1000, 2)
-    meta["fit_error_max_mm"] = round(float(err.max()) * 1000, 2)
-    (out,), transform = canonicalize([fitted])
-    meta["canonical"] = transform
-    check_contact(out, meta)
-    return out, offsets, meta
+    record_fit(fitted, joints, meta)
+    return settle(fitted, meta), offsets, meta
 
 
 __all__ = ["Character", "JOINT_MAP", "PROMPTS", "VIRTUAL", "clip_name", "deepmimic_prompt", "find_character", "read_frames", "forward_kinematics",
