@@ -2,7 +2,7 @@
 // what became of it (accepted / rejected and why), a failed one says why — never the reviewer's
 // raw verdict "correct" (which means "needs correction").
 import { expect, test, type APIRequestContext } from "@playwright/test";
-import { openStudio, shot, waitDone } from "./studio";
+import { makeMotion, openStudio, shot, waitDone } from "./studio";
 
 interface Stored {
   id: string;
@@ -11,17 +11,9 @@ interface Stored {
 }
 
 async function stored(request: APIRequestContext, body: Record<string, unknown>): Promise<Stored> {
-  const res = await request.post("/api/jobs", { data: body });
-  expect(res.status(), await res.text()).toBe(201);
-  const { motion_id } = await res.json();
-  await expect
-    .poll(async () => (await request.get(`/api/motions/${motion_id}`)).status(), { timeout: 150_000 })
-    .toBe(200);
-  return (await request.get(`/api/motions/${motion_id}`)).json();
+  return (await request.get(`/api/motions/${await makeMotion(request, body)}`)).json();
 }
 
-/** The first seed whose review matches `want` (the reviewer is deterministic per seed, but which
- * seed corrects depends on the models: look rather than hard-code one). */
 async function findSeed(request: APIRequestContext, prompt: string, want: (m: Stored) => boolean): Promise<Stored> {
   for (let seed = 1; seed <= 12; seed++) {
     const m = await stored(request, { prompt, seconds: 3, seed });

@@ -2,20 +2,9 @@
 // /api/motions/{id}/export?format=glb): one file for everyone, a skinned character and a skin
 // per person, one animation. Checked from the downloaded bytes: the glTF magic, version 2, the
 // length in the header, and the JSON chunk's skins, meshes and animation.
-import { expect, test, type APIRequestContext } from "@playwright/test";
+import { expect, test } from "@playwright/test";
 import { readFileSync } from "node:fs";
-import { openStudio, shot } from "./studio";
-
-/** Make a motion through the API (POST a job, poll until it is stored); returns its id. */
-async function makeMotion(request: APIRequestContext, prompt: string, persons: 1 | 2, seconds: number): Promise<string> {
-  const res = await request.post("/api/jobs", { data: { prompt, persons, seconds } });
-  expect(res.status()).toBe(201);
-  const { motion_id } = await res.json();
-  await expect
-    .poll(async () => (await request.get(`/api/motions/${motion_id}`)).status(), { timeout: 120_000 })
-    .toBe(200);
-  return motion_id as string;
-}
+import { makeMotion, openStudio, shot } from "./studio";
 
 /** The header and JSON chunk of a GLB. */
 function readGlb(bytes: Buffer): { magic: string; version: number; length: number; json: { skins: unknown[]; meshes?: unknown[]; animations: { channels: unknown[] }[]; nodes: { name?: string }[] } } {
@@ -29,7 +18,7 @@ function readGlb(bytes: Buffer): { magic: string; version: number; length: numbe
 
 for (const persons of [1, 2] as const) {
   test(`"GLB" downloads a binary glTF of the motion (${persons} ${persons === 1 ? "person" : "people"})`, async ({ page, request }, info) => {
-    const id = await makeMotion(request, persons === 1 ? "a person jumps" : "two people dance salsa", persons, 2);
+    const id = await makeMotion(request, { prompt: persons === 1 ? "a person jumps" : "two people dance salsa", persons, seconds: 2 }, 120_000);
     await openStudio(page, `/m/${id}`);
     await page.waitForFunction(() => window.__interplay.phase === "done");
     const button = page.getByRole("link", { name: "Download GLB" });

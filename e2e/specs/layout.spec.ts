@@ -1,18 +1,6 @@
-import { expect, test, type APIRequestContext, type Page } from "@playwright/test";
-import { hook, openStudio, shot } from "./studio";
+import { expect, test, type Page } from "@playwright/test";
+import { hook, makeMotion, openStudio, shot } from "./studio";
 
-/** Make a motion through the API (POST a job, poll until it is stored); returns its id. */
-async function makeMotion(request: APIRequestContext, prompt: string, persons: 1 | 2, seconds: number) {
-  const res = await request.post("/api/jobs", { data: { prompt, persons, seconds } });
-  expect(res.status()).toBe(201);
-  const { motion_id } = await res.json();
-  await expect
-    .poll(async () => (await request.get(`/api/motions/${motion_id}`)).status(), { timeout: 120_000 })
-    .toBe(200);
-  return motion_id as string;
-}
-
-/** Mean brightness (0–255) of a PNG, decoded in the page. */
 async function meanLuma(page: Page, png: Buffer): Promise<number> {
   return page.evaluate(async (b64) => {
     const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
@@ -30,7 +18,7 @@ async function meanLuma(page: Page, png: Buffer): Promise<number> {
 let motionId = "";
 
 test.beforeAll(async ({ request }) => {
-  motionId = await makeMotion(request, "two people dance salsa", 2, 3);
+  motionId = await makeMotion(request, { prompt: "two people dance salsa", persons: 2, seconds: 3 }, 120_000);
 });
 
 /** The header's controls, each one box (the path chip shows: a path is set). */

@@ -1,5 +1,5 @@
 // Helpers for driving the studio page through its UI and reading its test hook.
-import { expect, type Locator, type Page, type TestInfo } from "@playwright/test";
+import { expect, type APIRequestContext, type Locator, type Page, type TestInfo } from "@playwright/test";
 import { mkdirSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -80,6 +80,16 @@ export function hook(page: Page): Promise<HookSnapshot> {
 }
 
 /** Open the studio and wait until the skeleton is loaded and the empty scene has rendered. */
+/** Make a motion through the API (POST a job, poll until the motion is stored); its id. */
+export async function makeMotion(request: APIRequestContext, body: Record<string, unknown>,
+                                 timeout = 150_000): Promise<string> {
+  const res = await request.post("/api/jobs", { data: body });
+  expect(res.status(), await res.text()).toBe(201);
+  const { motion_id } = await res.json();
+  await expect.poll(async () => (await request.get(`/api/motions/${motion_id}`)).status(), { timeout }).toBe(200);
+  return motion_id as string;
+}
+
 export async function openStudio(page: Page, path = "/"): Promise<void> {
   await page.goto(path);
   await expect(page.getByTestId("legend")).toBeVisible();

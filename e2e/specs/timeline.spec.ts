@@ -1,21 +1,10 @@
 // The timeline: the track (segments, marks, playhead) on the scrubber's pixel mapping, Home/End,
 // and the shortcut sheet (`?`).
-import { expect, test, type APIRequestContext, type Page } from "@playwright/test";
-import { hook, openStudio, shot } from "./studio";
+import { expect, test, type Page } from "@playwright/test";
+import { hook, makeMotion, openStudio, shot } from "./studio";
 
 const THUMB = 14; // px, frontend/src/playback/timeline.ts THUMB_PX (styles.css --thumb)
 
-async function makeMotion(request: APIRequestContext, body: Record<string, unknown>): Promise<string> {
-  const res = await request.post("/api/jobs", { data: body });
-  expect(res.status(), await res.text()).toBe(201);
-  const { motion_id } = await res.json();
-  await expect
-    .poll(async () => (await request.get(`/api/motions/${motion_id}`)).status(), { timeout: 150_000 })
-    .toBe(200);
-  return motion_id as string;
-}
-
-/** Where the scrubber puts a frame's thumb centre (client x): half a thumb in at each end. */
 async function thumbX(page: Page, frame: number, total: number): Promise<number> {
   const box = (await page.getByTestId("scrubber").boundingBox())!;
   return box.x + THUMB / 2 + (frame / (total - 1)) * (box.width - THUMB);
