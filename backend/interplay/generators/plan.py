@@ -20,7 +20,9 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from interplay.planner.schema import Plan, Segment
 
-GeneratorName = Literal["retrieval", "spam", "coda"]
+# retrieve_edit: captured clips with arm actions laid over them (generators/retrieve_edit);
+# compose: two people's interactions composed from single-person captures (generators/interaction).
+GeneratorName = Literal["retrieval", "spam", "coda", "retrieve_edit", "compose"]
 
 
 class _Json(BaseModel):
