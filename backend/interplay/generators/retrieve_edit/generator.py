@@ -1,0 +1,107 @@
+"""Retrieve-then-edit: real captured clips as the base of every segment (`RetrievalGenerator`:
+text → clips, pose-matched cuts, cross-faded seams), then the edits that retrieval cannot give
+laid over them:
+
+1. the plan's arm actions (held poses, a raised hand, a wave while walking, `actions`), by IK
+   on the performer's bones over the segment's frames, eased in and out at its borders
+   (`arm_poses`); the legs, pelvis and untouched arm stay exactly as captured;
+2. the whole motion put on the floor where it carries weight (`ground.on_floor`).
+
+Every choice is written into the plan: the captures per segment (as retrieval's), and per
+segment the arm actions laid over it and the part edits left to the captured motion
+(`GenerationSegment.contact` is CODA's; these go into `edit_reasons`).
+
+Two people: the same, per person (roles from the plan when present, else the segment's
+edits apply to the first person only).
+
+    gen = RetrieveEditGenerator(index)
+    plan = gen.plan(Request("walk forward while waving your right hand", seconds=6, seed=3))
+    for start, chunk in gen.stream(req, plan): ...
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+
+from interplay.generators.base import Request, generate_motion
+from interplay.generators.plan import GenerationPlan, GenerationSegment, GeneratorName
+from interplay.generators.retrieval.generator import CHUNK, RetrievalGenerator
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.retrieve_edit.actions import arm_actions
+from interplay.generators.retrieve_edit.arm_poses import ArmAction, apply
+from interplay.generators.retrieve_edit.ground import on_floor
+from interplay.motion.motion import Motion
+
+NAME: GeneratorName = "retrieve_edit"
+
+
+def _actions(plan: GenerationPlan) -> tuple[list[ArmAction], list[str]]:
+    """Every segment's arm actions (one run per arm where consecutive segments hold the same
+    pose, so a pose held across a seam does not ease out and back in) and the reasons."""
+    acts: list[ArmAction] = []
+    reasons: list[str] = []
+    for seg in plan.segments:
+        new, why = arm_actions(seg)
+        reasons += [f"segment {seg.index}: {w}" for w in why]
+        for a in new:
+            prev = next((p for p in reversed(acts) if p.side == a.side), None)
+            if prev is not None and prev.pose == a.pose and prev.end == a.start:
+                acts[acts.index(prev)] = ArmAction(a.side, a.pose, prev.start, a.end)
+            else:
+                acts.append(a)
+    return acts, reasons
+
+
+class BaseRetrieval(RetrievalGenerator):
+    """Retrieval that looks up a segment's base motion ("a person walks forward") where arm
+    actions will be laid over it: the segment's whole prompt ("walks forward while waving")
+    finds a standing wave, whose legs do not walk."""
+
+    def query(self, seg: GenerationSegment) -> str:
+        if len(seg.persons) != 1:
+            return seg.prompt
+        acts, _ = arm_actions(seg)
+        return seg.base if acts else seg.prompt
+
+
+class RetrieveEditGenerator:
+    """Retrieval's clips with the plan's arm actions laid over them, on the floor."""
+
+    def __init__(self, index: RetrievalIndex):
+        self.index = index
+        self.retrieval = BaseRetrieval(index)
+
+    def plan(self, req: Request) -> GenerationPlan:
+        plan = self.retrieval.plan(req)
+        plan.generator = NAME
+        _, reasons = _actions(plan)
+        plan.generator_reason = "; ".join(
+            ["real captured clips per segment, arm actions laid over them by IK, feet put on "
+             "the floor"] + reasons)
+        return plan
+
+    def redraw(self, plan: GenerationPlan, index: int, seed: int) -> GenerationPlan:
+        return self.retrieval.redraw(plan, index, seed)
+
+    def frames(self, req: Request, plan: GenerationPlan) -> list[np.ndarray]:
+        """Every frame of the plan, one (T, 22, 3) float32 array per person."""
+        chunks = [people for _, people in self.retrieval.stream(req, plan)]
+        people = [np.concatenate([c[i] for c in chunks]).astype(np.float64)
+                  for i in range(plan.persons)]
+        acts, _ = _actions(plan)
+        if acts:
+            people[0] = apply(people[0], acts)
+        return [on_floor(p).astype(np.float32) for p in people]
+
+    def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
+        """(start frame, one (n ≤ 40, 22, 3) chunk per person), in order, covering the plan.
+        The floor pass sees the whole motion, so the frames are made first (a 6 s motion in
+        tens of milliseconds) and then streamed."""
+        people = self.frames(req, plan)
+        for a in range(0, len(people[0]), CHUNK):
+            yield a, [p[a:a + CHUNK] for p in people]
+
+    def generate(self, req: Request) -> Motion:
+        return generate_motion(self, req)
