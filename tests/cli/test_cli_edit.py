@@ -80,4 +80,4 @@ def test_edit_errors_exit_2(spam_dir, files, tmp_path, capsys, monkeypatch):
     monkeypatch.setenv("INTERPLAY_SPAM_DIR", str(tmp_path / "no-weights"))
     get_settings.cache_clear()
     assert cli.main(["edit", str(files["one"]), "--prompt", "x", "--out", out]) == 2
-    assert "editing needs the SPAM model" in capsys.readouterr().err
+    assert "needs the SPAM model" in capsys.readouterr().err

@@ -12,6 +12,7 @@ from interplay.generators.base import Request
 from interplay.generators.retrieval.generator import RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.router import with_spam
+from interplay.generators.spam.generator import SpamGenerator
 from interplay.generators.spam.runtime import DEFAULT_DIR
 from interplay.motion.kinematics import facing_angle
 from interplay.pipeline.orchestrator import (
@@ -45,7 +46,7 @@ def _replay(frames, total: int, persons: int) -> np.ndarray:
 
 
 def test_spam_review_runs_part_edits_and_resends_what_it_keeps(index):
-    gen = with_spam(index, DEFAULT_DIR, allow_untrained=True)
+    gen = SpamGenerator(with_spam(index, DEFAULT_DIR, allow_untrained=True).spam)
     req = Request("a person walks while raising the left arm above the head", 1, 4.0, seed=2)
     out, events, frames = _run(gen, req)
     assert events[0]["type"] == "plan" and events[0]["plan"]["generator"] == "spam"

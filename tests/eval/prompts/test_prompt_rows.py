@@ -16,7 +16,7 @@ def test_rows_without_weights_are_skipped_with_the_reason(tmp_path):
     assert set(skipped) == {"spam", "coda"} and all(skipped.values())
     served = {r.name: r.persons for r in rows}
     assert served == {"retrieval": (1, 2), "default": (1, 2)}
-    assert "retrieval" in next(r for r in rows if r.name == "default").about
+    assert "retrieve_edit" in next(r for r in rows if r.name == "default").about
 
 
 def test_unknown_rows_are_refused():

@@ -1,6 +1,7 @@
-"""The studio generator with SPAM in front of retrieval: one person → SPAM (plan says so, frames
-stream in order and add up exactly), two people → retrieval, and retrieval with the reason in
-the plan when the weights are missing, broken or an untrained placeholder; edits through it."""
+"""SPAM behind the studio's router: its plans stream through the router in order and add up
+exactly; the router's own plans (retrieve-then-edit) do not need it, and when its weights are
+missing, broken or an untrained placeholder the router says why and refuses the edits only SPAM
+can make; SPAM's edits through the router."""
 
 from __future__ import annotations
 
@@ -9,11 +10,11 @@ import shutil
 import numpy as np
 import pytest
 
-from interplay.generators.base import EditUnavailable, Request
+from interplay.generators.base import EditUnavailable, Request, generate_motion
 from interplay.generators.retrieval.generator import CHUNK
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.router import with_spam
-from interplay.generators.spam.generator import resolve_edit_part, segment_texts
+from interplay.generators.spam.generator import SpamGenerator, resolve_edit_part, segment_texts
 from interplay.generators.spam.runtime import DEFAULT_DIR, part_texts
 from interplay.generators.weights import placeholder_reason
 from interplay.motion import skeleton as sk
@@ -44,21 +45,24 @@ def _weights(tmp_path, card: str | None) -> str:
 def test_one_person_uses_spam_and_streams_exact_frames(spam_gen):
     assert spam_gen.spam is not None
     req = Request("a person walks forward, then jumps", persons=1, seconds=13.3, seed=4)
-    plan = spam_gen.plan(req)
+    spam = SpamGenerator(spam_gen.spam)
+    plan = spam.plan(req)
     assert plan.generator == "spam" and plan.seed == 4 and len(plan.segments) == 2
     chunks = list(spam_gen.stream(req, plan))
     starts = [s for s, _ in chunks]
     sizes = [len(c[0]) for _, c in chunks]
     assert starts == list(np.cumsum([0] + sizes[:-1])) and sum(sizes) == 266
     assert max(sizes) <= CHUNK and all(len(c) == 1 for _, c in chunks)
-    motion = spam_gen.generate(req)
+    motion = generate_motion(spam, req)
     assert motion.frames == 266 and motion.plan["generator"] == "spam"
     assert np.array_equal(motion.people[0], np.concatenate([c[0] for _, c in chunks]))
 
 
-def test_two_people_fall_back_to_retrieval_with_a_reason(spam_gen):
-    plan = spam_gen.plan(Request("two people dance salsa", persons=2, seconds=4, seed=1))
-    assert plan.generator == "retrieval" and "one person" in plan.generator_reason
+@pytest.mark.parametrize("persons", [1, 2])
+def test_the_router_plans_with_retrieve_edit_and_says_why(spam_gen, persons):
+    plan = spam_gen.plan(Request("a person walks forward" if persons == 1 else "two people dance salsa",
+                                 persons=persons, seconds=4, seed=1))
+    assert plan.generator == "retrieve_edit" and "real captured clips" in plan.generator_reason
 
 
 @pytest.mark.parametrize("case", ["missing", "broken", "placeholder"])
@@ -71,13 +75,15 @@ def test_bad_weights_fall_back_to_retrieval(case, index, tmp_path):
     else:
         d = _weights(tmp_path, "# SPAM — placeholder\n\nUNTRAINED graphs\n")
     gen = with_spam(index, d)
-    assert gen.spam is None
+    assert gen.spam is None and str(d) in gen.reason
     req = Request("a person walks forward", persons=1, seconds=3, seed=2)
-    plan = gen.plan(req)
-    assert plan.generator == "retrieval" and str(d) in plan.generator_reason
+    assert gen.plan(req).generator == "retrieve_edit"
     assert gen.generate(req).frames == 60
+    walk = fk_motion(40, "walk")[0]
+    _, entry = gen.edit(walk, "left_arm", "waves", seed=0)        # an arm pose: IK, no model
+    assert entry["generator"] == "ik_pose"
     with pytest.raises(EditUnavailable, match="SPAM"):
-        gen.edit(fk_motion(40, "walk")[0], "left_arm", "waves", seed=0)
+        gen.edit(walk, "left_leg", "kicks high", seed=0)
 
 
 def test_trained_card_is_served(tmp_path):
@@ -88,7 +94,8 @@ def test_trained_card_is_served(tmp_path):
 
 def test_edit_through_the_generator(spam_gen):
     joints = fk_motion(80, "walk")[0].astype(np.float64)
-    edit, entry = spam_gen.edit(joints, "right_arm", "waves the right hand", frames=(8, 60), seed=3)
+    edit, entry = spam_gen.edit(joints, "right_arm", "swings the right arm", frames=(8, 60), seed=3)
+    assert entry["generator"] == "spam"
     assert edit.parts == ("right_upper",) and entry["frames"] == [8, 60] and entry["seed"] == 3
     assert np.array_equal(edit.joints[:8], joints[:8]) and np.array_equal(edit.joints[60:], joints[60:])
     assert entry["untouched_change_cm"] < 0.5

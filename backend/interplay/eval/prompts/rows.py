@@ -4,9 +4,11 @@ people (one (T, 22, 3) array each) and the plan it made:
   retrieval  the retrieval generator alone (one and two people), plan → every frame
   spam       SPAM alone (one person only), plan → every frame
   coda       CODA alone (two people only), plan → every frame
-  default    the product: the router (SPAM for one person, CODA for two, retrieval where their
-             weights are missing) through the studio's whole pipeline, `orchestrate` with the
-             evaluator the server loads: plan → generate → review rounds → trajectories
+  retrieve_edit  retrieval's clips with the plan's arm actions laid over them by IK and the
+             feet put on the floor (`generators/retrieve_edit`), plan → every frame
+  default    the product: the router (retrieve_edit, chosen by this benchmark) through the
+             studio's whole pipeline, `orchestrate` with the evaluator the server loads:
+             plan → generate → review rounds → trajectories
 
 Rows are built from the generator the settings name (`load_generator`); a row whose model
 did not load is skipped with the router's reason.
@@ -21,12 +23,13 @@ import numpy as np
 
 from interplay.generators.base import Request, generate_motion
 from interplay.generators.coda.generator import CodaGenerator
+from interplay.generators.retrieve_edit.generator import RetrieveEditGenerator
 from interplay.generators.router import Router, load_generator
 from interplay.generators.spam.generator import SpamGenerator
 from interplay.pipeline.orchestrator import default_evaluator, orchestrate
 from interplay.settings import Settings
 
-ROW_NAMES = ("retrieval", "spam", "coda", "default")
+ROW_NAMES = ("retrieval", "spam", "coda", "retrieve_edit", "default")
 Make = Callable[[Request], tuple[list[np.ndarray], dict]]
 
 
@@ -64,8 +67,11 @@ def load_rows(names=ROW_NAMES, settings: Settings | None = None
     rows, skipped = [], {}
     for name in names:
         if name == "retrieval":
-            rows.append(Row(name, (1, 2), _plain(Router(router.index)),
+            rows.append(Row(name, (1, 2), _plain(router.retrieval),
                             "retrieval alone over the processed captures"))
+        elif name == "retrieve_edit":
+            rows.append(Row(name, (1, 2), _plain(RetrieveEditGenerator(router.index)),
+                            "retrieval + arm actions by IK + floor pass"))
         elif name == "spam":
             if router.spam is None:
                 skipped[name] = router.reason or "SPAM is not loaded"
@@ -77,9 +83,7 @@ def load_rows(names=ROW_NAMES, settings: Settings | None = None
                 continue
             rows.append(Row(name, (2,), _plain(CodaGenerator(router.coda)), "CODA alone"))
         else:
-            served = ", ".join(f"{n} person{'s' if n > 1 else ''}: {g}" for n, g in (
-                (1, "spam" if router.spam is not None else "retrieval"),
-                (2, "coda" if router.coda is not None else "retrieval")))
             rows.append(Row(name, (1, 2), _pipeline(router),
-                            f"the router through plan → generate → review → trajectory ({served})"))
+                            "the router (retrieve_edit) through plan → generate → review → "
+                            "trajectory"))
     return rows, skipped

@@ -18,7 +18,13 @@ from collections.abc import Iterator
 import numpy as np
 
 from interplay.generators.base import Request, generate_motion, random_seed
-from interplay.generators.plan import CapturePiece, GenerationPlan, RetrievalChoice, Source
+from interplay.generators.plan import (
+    CapturePiece,
+    GenerationPlan,
+    GenerationSegment,
+    RetrievalChoice,
+    Source,
+)
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieval.stitch import Stitcher
 from interplay.motion.motion import Motion
@@ -84,6 +90,11 @@ class RetrievalGenerator:
         plan.sources = [Source(clip=c, licence=self.index.clip(c).licence,
                                label=self.index.clip(c).label) for c in sorted(clips)]
 
+    def query(self, seg: GenerationSegment) -> str:
+        """The text a segment's captures are looked up by: its prompt (a generator that lays
+        part edits over the captures looks up the base motion instead)."""
+        return seg.prompt
+
     def plan(self, req: Request) -> GenerationPlan:
         """The planner's plan plus, per segment, the captures chosen for it and the seed used."""
         seed = req.seed if req.seed is not None else random_seed()
@@ -91,7 +102,7 @@ class RetrievalGenerator:
                                         seed=seed, generator="retrieval")
         after = None
         for seg in plan.segments:
-            seg.retrieval = self.retrieve(seg.prompt, seg.end - seg.start, req.persons,
+            seg.retrieval = self.retrieve(self.query(seg), seg.end - seg.start, req.persons,
                                           _rng(seed, seg.index), after)
             after = _ends(seg.retrieval)
         self._summarise(plan)
@@ -102,7 +113,7 @@ class RetrievalGenerator:
         continuing from the previous segment's captures."""
         out = plan.model_copy(deep=True)
         seg, prev = out.segments[index], out.segments[index - 1].retrieval if index > 0 else None
-        seg.retrieval = self.retrieve(seg.prompt, seg.end - seg.start, out.persons,
+        seg.retrieval = self.retrieve(self.query(seg), seg.end - seg.start, out.persons,
                                       _rng(seed, index), _ends(prev) if prev else None)
         self._summarise(out)
         return out
@@ -141,7 +152,7 @@ class RetrievalGenerator:
             if start != expected or end <= start:
                 raise ValueError(f"plan segments must tile the motion; segment {seg.index} "
                                  f"spans {start}–{end}, expected to start at {expected}")
-            retrieval = seg.retrieval or self.retrieve(seg.prompt, end - start, persons,
+            retrieval = seg.retrieval or self.retrieve(self.query(seg), end - start, persons,
                                                        _rng(seed, seg.index), after)
             after = _ends(retrieval)
             frames = self._render(stitcher, retrieval, persons)
