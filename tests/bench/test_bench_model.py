@@ -27,3 +27,12 @@ def test_pair_bench_times_generation_and_the_finished_product(tmp_path):
     table = format_pair_table(report)
     assert "generate 2 s" in table and "+ finish 6 s" in table and "target" in table
     assert "did not load" in format_pair_table(run_pair_bench(tmp_path / "none", runs=1))
+
+
+def test_default_bench_times_the_router_and_its_ik_edit():
+    from interplay.bench.model import format_default_table, run_default_bench
+    report = run_default_bench(runs=2, warmup=0, seconds=(2.0,))
+    assert [r["frames"] for r in report["generate"]] == [40]
+    assert report["edit"]["generator"] == "ik_pose" and report["edit"]["runs"] == 2
+    table = format_default_table(report)
+    assert "generate 2 s" in table and "edit 1 part 6 s" in table

@@ -101,3 +101,44 @@ def format_model_table(report: dict) -> str:
     lines.append(f"targets: 6 s generate p50 ≤ {t['generate_6s_p50']:.0f} ms, "
                  f"edit p50 ≤ {t['edit_p50']:.0f} ms")
     return "\n".join(lines)
+
+
+def run_default_bench(runs: int = 10, warmup: int = 2, seconds: tuple[float, ...] = (2.0, 6.0, 10.0),
+                      router=None) -> dict:
+    """The product default (the router's retrieve-then-edit: plan → clips → arm actions →
+    floor) for 2, 6 and 10 s, and the router's one-part edit of a 6 s motion (an arm pose by
+    IK): {"generate": [rows], "edit": row, "targets_ms"}."""
+    from interplay.generators.base import Request, generate_motion
+    from interplay.generators.router import load_generator
+    router = router or load_generator()
+    report: dict = {"generator": "retrieve_edit", "load_avg_1m": round(os.getloadavg()[0], 2),
+                    "generate": [], "targets_ms": TARGETS_MS}
+    for s in seconds:
+        times = _timed(lambda i, s=s: generate_motion(
+            router, Request(PROMPTS[i % len(PROMPTS)], seconds=s, seed=i)), runs, warmup)
+        report["generate"].append({"seconds": s, **_row(times, round(s * 20))})
+    base = np.asarray(generate_motion(router, Request(PROMPTS[0], seconds=6.0, seed=0)).people[0],
+                      dtype=np.float64)
+    last = {}
+
+    def edit(i):
+        last["entry"] = router.edit(base, "left_arm", EDIT_PROMPT, None, seed=i)[1]
+    times = _timed(edit, runs, warmup)
+    report["edit"] = {"seconds": 6.0, "part": "left_arm", "generator": last["entry"]["generator"],
+                      **_row(times, 120)}
+    report["load_avg_1m_after"] = round(os.getloadavg()[0], 2)
+    return report
+
+
+def format_default_table(report: dict) -> str:
+    lines = [f"the product default ({report['generator']}: plan, captured clips, arm actions, "
+             f"floor; load average {report['load_avg_1m']:g} → {report['load_avg_1m_after']:g})",
+             f"{'task':<16}  {'frames':>6}  {'runs':>4}  {'p50':>8}  {'p95':>8}  {'frames/s':>8}"
+             f"  {'CPU p50':>8}"]
+    rows = [(f"generate {r['seconds']:g} s", r) for r in report["generate"]]
+    rows.append((f"edit 1 part {report['edit']['seconds']:g} s", report["edit"]))
+    for name, r in rows:
+        lines.append(f"{name:<16}  {r['frames']:>6}  {r['runs']:>4}  {r['p50_ms']:>5.0f} ms  "
+                     f"{r['p95_ms']:>5.0f} ms  {r['frames_per_s']:>8.0f}  {r['cpu_p50_ms']:>5.0f} ms")
+    lines.append(f"(the edit ran as {report['edit']['generator']}; targets as above)")
+    return "\n".join(lines)

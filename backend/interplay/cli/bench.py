@@ -11,7 +11,12 @@ def cmd_bench(args) -> int:
     from interplay.bench.api import format_table, run_bench
     if args.runs < 1:
         raise CliError("--runs must be at least 1")
-    from interplay.bench.model import format_model_table, run_model_bench
+    from interplay.bench.model import (
+        format_default_table,
+        format_model_table,
+        run_default_bench,
+        run_model_bench,
+    )
     from interplay.settings import get_settings
     report, tables, only = {}, [], args.only
     if only in (None, "api"):
@@ -21,6 +26,8 @@ def cmd_bench(args) -> int:
         report["model"] = run_model_bench(get_settings().spam_dir, runs=args.runs,
                                           warmup=args.warmup)
         tables.append(format_model_table(report["model"]))
+        report["default"] = run_default_bench(runs=args.runs, warmup=args.warmup)
+        tables.append(format_default_table(report["default"]))
     if only in (None, "pair"):
         from interplay.bench.pair import format_pair_table, run_pair_bench
         report["pair"] = run_pair_bench(get_settings().coda_dir, runs=args.runs,
@@ -42,6 +49,6 @@ def register(sub) -> None:
     p.add_argument("--seconds", type=seconds, default=6.0, help="motion length (default 6)")
     p.add_argument("--warmup", type=int, default=1, help="untimed jobs first (default 1)")
     p.add_argument("--only", choices=("api", "model", "pair", "reaction"), help="one section: "
-                   "jobs through the API, SPAM on onnxruntime, CODA two-person generation, or "
+                   "jobs through the API, SPAM on onnxruntime and the product default, CODA two-person generation, or "
                    "the ARFlow reactor (default all)")
     p.set_defaults(func=cmd_bench)
