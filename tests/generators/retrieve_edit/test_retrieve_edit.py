@@ -116,3 +116,20 @@ def test_an_ik_part_edit_holds_over_its_frames_and_leaves_the_rest(router):
     assert pose_edit(walk, "left_leg", "kick high", None) is None
     _, edit = router.edit(walk, "right_arm", "hold a T-pose", None, seed=3)
     assert edit["generator"] == "ik_pose" and edit["arms"] == ["right_arm"]
+
+
+def test_high_knees_lift_in_every_step_and_keep_walking(gen):
+    for seed in SEEDS:
+        mo = gen.generate(Request("march forward lifting your knees high", seconds=6, seed=seed))
+        j = np.asarray(mo.people[0], dtype=np.float64)
+        b = m.frame_of(j)
+        assert named.knee_raise(b, 3)[0] and named.travels(b, 1.5)[0]
+        assert named.grounded(j, b)[0]
+        assert "_arm:" not in mo.plan["generator_reason"]     # "lifting … high" raises no arm
+
+
+def test_raised_arms_are_read_from_arms_and_hands_only():
+    assert pose_of("lifts the left knee high") is None
+    assert pose_of("a person picks up a box with both hands", strict=True) is None
+    assert pose_of("a person jumps up and down", strict=True) is None
+    assert pose_of("a person raises the left hand", strict=True) == "arm_up"

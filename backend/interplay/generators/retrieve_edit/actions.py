@@ -32,8 +32,14 @@ BOTH: tuple[tuple[str, re.Pattern[str]], ...] = (
                           r"|(?:arms|hands) above (?:the|your|his|her|their) heads?")),
 )
 WAVE = re.compile(r"\bwav(?:e|es|ing)\b")
-RAISE = re.compile(r"\b(?:rais|lift|hold|put|stretch|reach)\w* .*\b(?:up|high|above|overhead"
-                   r"|in the air|skyward)\b|\b(?:arm|hand) (?:up|raised|in the air|overhead)")
+# A raised arm: the text names an arm or a hand and raising it (not a knee lifted high).
+LIMB = re.compile(r"\b(?:arms?|hands?)\b")
+RAISE = re.compile(r"\b(?:rais\w*|lift\w*|up|high|above|overhead|in the air|skyward)\b")
+# … and in a whole segment's text ("picks up a box with both hands" is no raised arm): raising
+# an arm or a hand, or an arm or a hand held up.
+RAISE_STRICT = re.compile(r"\b(?:rais|lift|hold|put|stretch|reach)\w* (?:\w+ ){0,3}(?:arms?|hands?)"
+                          r"\b(?! on)|\b(?:arms?|hands?) (?:is |are |held )?(?:up|raised|above|"
+                          r"overhead|in the air)\b")
 
 
 def side_of(text: str) -> str | None:
@@ -42,15 +48,16 @@ def side_of(text: str) -> str | None:
     return sides[0] if len(sides) == 1 else None
 
 
-def pose_of(text: str) -> str | None:
-    """The arm pose a part instruction or a segment text names, if one `arm_poses` holds."""
+def pose_of(text: str, strict: bool = False) -> str | None:
+    """The arm pose a part instruction (or, `strict`, a whole segment's text) names, if one
+    `arm_poses` holds."""
     t = text.lower()
     for pose, pattern in BOTH:
         if pattern.search(t):
             return pose
     if WAVE.search(t):
         return "wave"
-    if RAISE.search(t):
+    if RAISE_STRICT.search(t) if strict else LIMB.search(t) and RAISE.search(t):
         return "arm_up"
     return None
 
@@ -75,7 +82,7 @@ def arm_actions(seg: Segment, offset: int = 0) -> tuple[list[ArmAction], list[st
         # Poses the planner left in the segment's text: both arms for a whole-body pose; a
         # wave or a raise on the named hand (the right one when none is named).
         text = f"{seg.base} {seg.prompt}".lower()
-        pose = pose_of(text)
+        pose = pose_of(text, strict=True)
         both = next((p for p, pattern in BOTH if pattern.search(text)), None)
         if both is not None:
             actions = {s: both for s in SIDES}
@@ -94,3 +101,18 @@ def arm_actions(seg: Segment, offset: int = 0) -> tuple[list[ArmAction], list[st
         reasons.append(f"{side}_arm: {pose.replace('_', ' ')} held by IK over frames "
                        f"{seg.start}–{seg.end} (the captured arm there is replaced)")
     return [ArmAction(side, pose, start, end) for side, pose in sorted(actions.items())], reasons
+
+
+KNEES = re.compile(r"\bknees?\b.*\b(?:high|up|lift|rais)|\b(?:lift|rais)\w* .*\bknees?\b|high knees")
+
+
+def knee_lifts(seg: Segment) -> tuple[tuple[str, ...], list[str]]:
+    """The legs whose knees the segment asks to lift high in every step ("march lifting your
+    knees high", "jog with high knees"), and the reasons."""
+    legs = tuple(p.removesuffix("_leg") for p, t in seg.edits.named().items()
+                 if p.endswith("_leg") and KNEES.search(t.lower()))
+    if not legs and KNEES.search(f"{seg.base} {seg.prompt}".lower()):
+        legs = SIDES
+    why = [f"{s}_leg: knee lifted high in every swing by IK over frames {seg.start}–{seg.end}"
+           for s in legs]
+    return legs, why

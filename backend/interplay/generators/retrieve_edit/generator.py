@@ -5,7 +5,8 @@ laid over them:
 1. the plan's arm actions (held poses, a raised hand, a wave while walking, `actions`), by IK
    on the performer's bones over the segment's frames, eased in and out at its borders
    (`arm_poses`); the legs, pelvis and untouched arm stay exactly as captured;
-2. the whole motion put on the floor where it carries weight (`ground.on_floor`).
+2. knees lifted high in every step where the plan asks for it (`leg_lifts`);
+3. the whole motion put on the floor where it carries weight (`ground.on_floor`).
 
 Every choice is written into the plan: the captures per segment (as retrieval's), and per
 segment the arm actions laid over it and the part edits left to the captured motion
@@ -29,9 +30,10 @@ from interplay.generators.base import Request, generate_motion
 from interplay.generators.plan import GenerationPlan, GenerationSegment, GeneratorName
 from interplay.generators.retrieval.generator import CHUNK, RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.retrieve_edit.actions import arm_actions
+from interplay.generators.retrieve_edit.actions import arm_actions, knee_lifts
 from interplay.generators.retrieve_edit.arm_poses import ArmAction, apply
 from interplay.generators.retrieve_edit.ground import on_floor
+from interplay.generators.retrieve_edit.leg_lifts import lift_knees
 from interplay.motion.motion import Motion
 
 NAME: GeneratorName = "retrieve_edit"
@@ -44,6 +46,7 @@ def _actions(plan: GenerationPlan) -> tuple[list[ArmAction], list[str]]:
     reasons: list[str] = []
     for seg in plan.segments:
         new, why = arm_actions(seg)
+        why += knee_lifts(seg)[1]
         reasons += [f"segment {seg.index}: {w}" for w in why]
         for a in new:
             prev = next((p for p in reversed(acts) if p.side == a.side), None)
@@ -63,7 +66,7 @@ class BaseRetrieval(RetrievalGenerator):
         if len(seg.persons) != 1:
             return seg.prompt
         acts, _ = arm_actions(seg)
-        return seg.base if acts else seg.prompt
+        return seg.base if acts or knee_lifts(seg)[0] else seg.prompt
 
 
 class RetrieveEditGenerator:
@@ -90,6 +93,10 @@ class RetrieveEditGenerator:
         chunks = [people for _, people in self.retrieval.stream(req, plan)]
         people = [np.concatenate([c[i] for c in chunks]).astype(np.float64)
                   for i in range(plan.persons)]
+        for seg in plan.segments:
+            legs, _ = knee_lifts(seg)
+            if legs:
+                people[0] = lift_knees(people[0], legs, seg.start, seg.end)
         acts, _ = _actions(plan)
         if acts:
             people[0] = apply(people[0], acts)
