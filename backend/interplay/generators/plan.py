@@ -86,7 +86,8 @@ class GenerationSegment(Segment):
 
 
 class GenerationPlan(Plan):
-    OMIT_UNSET: ClassVar[tuple[str, ...]] = ("generator_reason", "model", "trajectory")
+    OMIT_UNSET: ClassVar[tuple[str, ...]] = ("generator_reason", "model", "trajectory",
+                                             "composition")
     model_config = ConfigDict(extra="forbid", protected_namespaces=())
     # pydantic narrows the planner's segments to generation segments; mypy sees list as invariant
     segments: list[GenerationSegment] = Field(min_length=1)  # type: ignore[assignment]
@@ -97,6 +98,7 @@ class GenerationPlan(Plan):
     sources: list[Source] = Field(default_factory=list)
     model: ModelInfo | None = None
     trajectory: dict[str, Any] | None = None    # the request's drawn path or preset, if any
+    composition: dict[str, Any] | None = None   # compose: the interaction, its clips, timing, reasons
 
     @classmethod
     def from_plan(cls, plan: Plan, **fields: Any) -> GenerationPlan:

@@ -6,6 +6,9 @@ people (one (T, 22, 3) array each) and the plan it made:
   coda       CODA alone (two people only), plan → every frame
   retrieve_edit  retrieval's clips with the plan's arm actions laid over them by IK and the
              feet put on the floor (`generators/retrieve_edit`), plan → every frame
+  compose    interaction by composition alone (two people only: real single-person clips
+             timed against each other, contacts by IK, `generators/interaction`), plan →
+             every frame
   default    the product: the router (retrieve_edit, chosen by this benchmark) through the
              studio's whole pipeline, `orchestrate` with the evaluator the server loads:
              plan → generate → review rounds → trajectories
@@ -23,13 +26,14 @@ import numpy as np
 
 from interplay.generators.base import Request, generate_motion
 from interplay.generators.coda.generator import CodaGenerator
+from interplay.generators.interaction.generator import InteractionGenerator
 from interplay.generators.retrieve_edit.generator import RetrieveEditGenerator
 from interplay.generators.router import Router, load_generator
 from interplay.generators.spam.generator import SpamGenerator
 from interplay.pipeline.orchestrator import default_evaluator, orchestrate
 from interplay.settings import Settings
 
-ROW_NAMES = ("retrieval", "spam", "coda", "retrieve_edit", "default")
+ROW_NAMES = ("retrieval", "spam", "coda", "retrieve_edit", "compose", "default")
 Make = Callable[[Request], tuple[list[np.ndarray], dict]]
 
 
@@ -72,6 +76,9 @@ def load_rows(names=ROW_NAMES, settings: Settings | None = None
         elif name == "retrieve_edit":
             rows.append(Row(name, (1, 2), _plain(RetrieveEditGenerator(router.index)),
                             "retrieval + arm actions by IK + floor pass"))
+        elif name == "compose":
+            rows.append(Row(name, (2,), _plain(InteractionGenerator(router.index)),
+                            "interaction by composition alone (two people)"))
         elif name == "spam":
             if router.spam is None:
                 skipped[name] = router.reason or "SPAM is not loaded"

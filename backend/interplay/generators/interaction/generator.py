@@ -1,0 +1,183 @@
+"""Interaction by composition as a generator (issue 15): two people's motion made from real
+single-person clips, timed against each other, touching where the prompt asks, both on the
+same skeleton. Prompts with no interaction it composes (a couple dancing, jumping together)
+and one-person requests go to the retrieval generator, and the plan says why.
+
+    gen = InteractionGenerator(RetrievalIndex(default_clips(), get_encoder()))
+    plan = gen.plan(Request("two friends shake hands", persons=2, seconds=6, seed=0))
+    plan.generator, plan.composition["kind"]       # "compose", "handshake"
+    for start, (a, b) in gen.stream(req, plan): …  # ≤ 40 frames a chunk, every frame
+
+The plan's `composition` holds what was chosen and why: the script (kind, who starts, an
+approach first, hands held, with the reasons: keywords, the text encoder, the planner's
+roles), the clips each person is made of, the timing (approach, reach, contact, release), the
+placement and the plausibility of the result. Frames depend only on the request and the
+plan's script, so `stream` makes them again when they are not cached.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Iterator
+
+import numpy as np
+
+from interplay.generators.base import Request, generate_motion, random_seed
+from interplay.generators.interaction import gestures, touches, travel
+from interplay.generators.interaction.bodies import SHARED
+from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, read_script, why_not
+from interplay.generators.interaction.library import Library
+from interplay.generators.interaction.scene import Cast, finish
+from interplay.generators.plan import GenerationPlan, Source
+from interplay.generators.retrieval.generator import RetrievalGenerator
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.motion.checks.named import plausibility
+from interplay.motion.motion import Motion
+from interplay.motion.skeleton import FPS, JOINT_INDEX
+from interplay.planner.plan import plan as make_plan
+
+NAME = "compose"
+CHUNK = 40
+ATTEMPTS = 4          # draws tried until one is plausible (no pops, grounded, not inside each other)
+CACHE = 8
+BUILDERS = {
+    "handshake": touches.handshake, "high_five": touches.high_five, "hug": touches.hug,
+    "push": touches.push, "wave": gestures.wave, "wave_back": gestures.wave_back,
+    "bow": gestures.bow, "mirror": gestures.mirror, "follow": travel.follow,
+    "one_stops": travel.one_stops, "side_by_side": travel.side_by_side, "approach": travel.approach,
+}
+FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)
+
+
+def plain(x):
+    """A report made of numpy scalars and tuples as plain JSON values."""
+    if isinstance(x, dict):
+        return {str(k): plain(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [plain(v) for v in x]
+    if isinstance(x, np.generic):
+        return x.item()
+    if isinstance(x, float):
+        return round(x, 4)
+    return x
+
+
+def _roles(plan) -> dict | None:
+    """The first segment's per-person roles, when the planner gave any."""
+    return next((dict(s.roles) for s in plan.segments if s.roles), None)
+
+
+def _texts(prompt: str, roles: dict | None) -> list[str]:
+    return [str((roles or {}).get(k) or prompt) for k in ("0", "1")]
+
+
+class InteractionGenerator:
+    """Two-person interactions composed from real clips (see the module doc); `index` is the
+    retrieval index whose clips it uses (and whose generator serves what it does not)."""
+
+    def __init__(self, index: RetrievalIndex, retrieval: RetrievalGenerator | None = None):
+        self.index = index
+        self.retrieval = retrieval if retrieval is not None else RetrievalGenerator(index)
+        self.library = Library.of_index(index)
+        self._frames: OrderedDict[tuple, list[np.ndarray]] = OrderedDict()
+
+    # -- planning ----------------------------------------------------------------------------
+    def _fallback(self, req: Request, seed: int, why: str) -> GenerationPlan:
+        plan = self.retrieval.plan(Request(req.prompt, req.persons, req.seconds, seed))
+        plan.generator_reason = f"composition: {why}; the retrieval generator made this instead"
+        return plan
+
+    def plan(self, req: Request) -> GenerationPlan:
+        seed = req.seed if req.seed is not None else random_seed()
+        if req.persons != 2:
+            return self._fallback(req, seed, "composes two people only")
+        base = make_plan(req.prompt, 2, req.seconds)
+        roles = _roles(base)
+        script = read_script(req.prompt, roles, self.index.encoder)
+        if script is None:
+            return self._fallback(req, seed, f"no interaction it composes ({why_not(req.prompt, self.index.encoder)})")
+        try:
+            people, composition = self.compose(script, req, seed, roles)
+        except ValueError as exc:
+            return self._fallback(req, seed, f"the {script.kind} could not be composed ({exc})")
+        plan = GenerationPlan.from_plan(base, seed=seed, generator=NAME, synthetic=True,
+                                        composition=composition)
+        clips = sorted({s["clip"] for p in composition["people"] for s in p["clips"]})
+        plan.sources = [Source(clip=c, licence=self.index.clip(c).licence, label=self.index.clip(c).label)
+                        for c in clips if c in self.index.by_id]
+        self._remember(req, seed, composition["script"], people)
+        return plan
+
+    def compose(self, script: Script, req: Request, seed: int, roles: dict | None = None
+                ) -> tuple[list[np.ndarray], dict]:
+        """The two people's joints and the composition report for a script (deterministic
+        for the seed; up to ATTEMPTS draws, the first plausible one kept, else the best)."""
+        frames = int(round(req.seconds * FPS))
+        rng = np.random.default_rng([seed % 2**63, KINDS.index(script.kind)])
+        contact = script.kind in CONTACT or script.held
+        best: tuple | None = None
+        errors = []
+        for attempt in range(ATTEMPTS):
+            cast = Cast(rng, self.library, script, frames, _texts(req.prompt, roles))
+            try:
+                people = finish(BUILDERS[script.kind](cast))
+            except ValueError as exc:
+                errors.append(str(exc))
+                continue
+            checks = plausibility(people, start="standing", contact=contact)
+            failed = [f"{r.check}" + (f" (person {r.person})" if r.person is not None else "")
+                      for r in checks if not r.passed]
+            if best is None or len(failed) < len(best[2]):
+                best = (people, cast, failed, attempt)
+            if not failed:
+                break
+        if best is None:
+            raise ValueError("; ".join(dict.fromkeys(errors)) or "no draw worked")
+        people, cast, failed, attempt = best
+        composition = plain({
+            "kind": script.kind, "script": script.to_json(), "reasons": list(script.reasons),
+            "skeleton": f"both people on the SMPL template's bones (forearm {FOREARM_M} m)",
+            "people": [{"text": t, "clips": s} for t, s in zip(cast.texts, cast.sources)],
+            "timing": cast.report, "draw": attempt + 1,
+            "plausibility": {"failed": failed, "contact_asked": contact},
+        })
+        return [p.astype(np.float32) for p in people], composition
+
+    def _remember(self, req: Request, seed: int, script: dict, people: list[np.ndarray]) -> None:
+        key = (req.prompt, float(req.seconds), seed, repr(sorted(script.items())))
+        self._frames[key] = people
+        self._frames.move_to_end(key)
+        while len(self._frames) > CACHE:
+            self._frames.popitem(last=False)
+
+    # -- frames ------------------------------------------------------------------------------
+    def frames(self, req: Request, plan: GenerationPlan) -> list[np.ndarray]:
+        """Both people's joints for a composed plan (cached from `plan`, else made again)."""
+        comp = plan.composition or {}
+        script = comp.get("script")
+        if not script:
+            raise ValueError("a compose plan needs its composition's script")
+        key = (req.prompt, float(req.seconds), plan.seed, repr(sorted(script.items())))
+        if key in self._frames:
+            return self._frames[key]
+        s = Script(script["kind"], int(script["actor"]), bool(script["approach"]),
+                   bool(script["held"]), tuple(script.get("reasons", ())))
+        people, _ = self.compose(s, req, plan.seed, _roles(plan))
+        self._remember(req, plan.seed, script, people)
+        return people
+
+    def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
+        """(start frame, [person 0 chunk, person 1 chunk]), ≤ 40 frames each, every frame;
+        plans this generator handed to retrieval stream from retrieval."""
+        if plan.generator != NAME:
+            yield from self.retrieval.stream(req, plan)
+            return
+        people = self.frames(req, plan)
+        total = sum(s.end - s.start for s in plan.segments)
+        if len(people[0]) != total:
+            raise ValueError(f"composed {len(people[0])} frames for a plan of {total}")
+        for a in range(0, total, CHUNK):
+            yield a, [p[a:a + CHUNK] for p in people]
+
+    def generate(self, req: Request) -> Motion:
+        return generate_motion(self, req)

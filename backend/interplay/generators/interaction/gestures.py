@@ -1,0 +1,107 @@
+"""Scenes of gestures made to each other from a distance: waves (together, or one waving back
+after the other), bows, and one person mirroring the other's arm movements. Each person plays
+a real clip of the gesture (`library` families: the clip shows it), turned to face the other
+and timed against the other's; a clip shorter than the request is lengthened from its own
+quiet start and end (`bodies.extend`). The mirror is the leader's clip reflected left to right
+(`pair.windows.mirror`) and played a reaction time later. numpy only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from interplay.generators.interaction.bodies import extend, facing_pair, on_shared
+from interplay.generators.interaction.scene import Cast
+from interplay.motion.checks import measures as m
+from interplay.motion.clip import Clip
+from interplay.motion.pair.bases import face_forward
+from interplay.motion.pair.windows import mirror as mirrored
+from interplay.motion.skeleton import FPS
+
+MIRROR_LAG = 2         # frames (0.1 s) the mirroring person trails the leader
+
+
+def _clip(c: Cast, person: int, family: str) -> tuple[Clip, np.ndarray]:
+    clip = c.lib.pick(c.rng, family, c.texts[person])
+    j = face_forward(on_shared(clip.people[0], clip.offsets[0]))
+    c.source(person, {"clip": clip.id, "start": 0, "end": clip.frames, "mirrored": False,
+                      "licence": clip.licence}, family)
+    return clip, j
+
+
+def _timed(j: np.ndarray, onset: int, at: int, frames: int) -> np.ndarray:
+    """`frames` frames of a clip whose event starts at its frame `onset`, placed so the event
+    starts at output frame `at` (padded from the clip's quiet ends as needed)."""
+    start = onset - at
+    before, after = max(0, -start), max(0, start + frames - len(j))
+    longer = extend(j, before, after)
+    s = start + before
+    return longer[s:s + frames]
+
+
+def _wave_onset(j: np.ndarray) -> int:
+    b = m.frame_of(j)
+    starts = [s for side in m.SIDES for s, _, _ in m.waves(b, side, "shoulder")]
+    return min(starts) if starts else len(j) // 3
+
+
+def _bow_onset(j: np.ndarray) -> int:
+    lean = m.torso_lean(m.frame_of(j))
+    deep = np.flatnonzero(lean >= 20.0)
+    return int(deep[0]) if len(deep) else len(j) // 3
+
+
+def _gesture(c: Cast, family: str, onset_of, first_s: tuple[float, float],
+             delay_s: tuple[float, float], distance: tuple[float, float]) -> list[np.ndarray]:
+    rng, frames = c.rng, c.frames
+    first = c.script.actor
+    at = int(round(rng.uniform(*first_s) * FPS))
+    delay = int(round(rng.uniform(*delay_s) * FPS))
+    people: list[np.ndarray] = [np.zeros(0), np.zeros(0)]
+    timing = {}
+    for person, when in ((first, at), (1 - first, at + delay)):
+        clip, j = _clip(c, person, family)
+        onset = onset_of(j)
+        people[person] = _timed(j, onset, when, frames)
+        timing[str(person)] = {"clip_onset": onset, "at": when}
+    dist = float(rng.uniform(*distance))
+    a, b = facing_pair(people[0], people[1], dist)
+    c.report[family] = {"onsets": timing, "first": first, "distance_m": round(dist, 3)}
+    return [a, b]
+
+
+def wave(c: Cast) -> list[np.ndarray]:
+    far = "across" in " ".join(c.texts)
+    return _gesture(c, "wave", _wave_onset, (0.2, 0.8), (0.0, 0.4), (3.0, 4.0) if far else (2.0, 3.0))
+
+
+def wave_back(c: Cast) -> list[np.ndarray]:
+    return _gesture(c, "wave", _wave_onset, (0.2, 0.6), (0.9, 1.5), (2.0, 3.0))
+
+
+def bow(c: Cast) -> list[np.ndarray]:
+    return _gesture(c, "bow", _bow_onset, (0.3, 0.8), (0.0, 0.4), (1.7, 2.1))
+
+
+def mirror(c: Cast) -> list[np.ndarray]:
+    """The leader (`actor`) moves the arms as a real clip does; the other mirrors it."""
+    rng, frames = c.rng, c.frames
+    lead = c.script.actor
+    clip, j = _clip(c, lead, "arms")
+    # The stretch of the clip whose arms move most, padded when the clip is shorter.
+    speed = np.linalg.norm(np.diff(j[:, [m.J["left_wrist"], m.J["right_wrist"]]], axis=0), axis=-1).sum(1)
+    n = frames + MIRROR_LAG
+    if len(j) > n:
+        windows = np.convolve(speed, np.ones(n - 1), mode="valid")
+        s = int(np.argmax(windows))
+        j = j[s:s + n]
+    else:
+        j = extend(j, 0, n - len(j))
+    leader = j[MIRROR_LAG:]
+    follower = mirrored(j[:frames])
+    people = [leader, follower] if lead == 0 else [follower, leader]
+    dist = float(rng.uniform(1.8, 2.4))
+    a, b = facing_pair(people[0], people[1], dist)
+    c.sources[1 - lead].append({**c.sources[lead][-1], "mirrored": True, "use": "mirror image"})
+    c.report["mirror"] = {"leader": lead, "lag_frames": MIRROR_LAG, "distance_m": round(dist, 3)}
+    return [a, b]
