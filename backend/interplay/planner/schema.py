@@ -1,13 +1,19 @@
 """The plan the planner hands to the generator, as validated pydantic models.
 
     Plan     {prompt, rewritten, persons, seconds, segments, reasons, planner, fallback_reason}
-    Segment  {index, prompt, base, edits, trajectory, seconds, start, end, persons, roles, repeat}
+    Segment  {index, prompt, base, edits, trajectory, seconds, start, end, persons, roles, repeat,
+              travel?, timing?}
 
 A segment is one temporal step of the motion (CoMA's P_i): `prompt` is its rewritten text,
 `base` the whole-body motion (P_base), `edits` one instruction per body part or None (P_edit),
 `trajectory` a path for the pelvis (P_traj). `start`/`end` are frames at 20 fps (end exclusive)
 and the segments tile [0, round(seconds × 20)). `persons` lists the people who act in the
-segment; with two people `roles` says what each one does ({"0": …, "1": …}).
+segment; with two people `roles` says what each one does ({"0": …, "1": …}) and `timing`,
+when the segment is part of an exchange, who started it and when the other answers
+("one pushes the other, who stumbles backwards": the push, then the stumble from the contact).
+`travel` is the direction the moving people go relative to where they face ("walks backwards"
+→ "backward"): a direction of the body's motion, never a path to turn round for. An edit that
+starts with "holds" is a pose kept over the whole segment ("holds both arms crossed …").
 
 Trajectory coordinates are metres on the floor as [x, z] in the first person's start frame:
 +z is where they face, +x is their left (the skeleton's rest pose faces +Z, its left is +X).
@@ -24,9 +30,11 @@ from pydantic import (
     BaseModel,
     ConfigDict,
     Field,
+    SerializerFunctionWrapHandler,
     Strict,
     ValidationError,
     field_validator,
+    model_serializer,
     model_validator,
 )
 
@@ -176,6 +184,37 @@ class PartEdits(BaseModel):
         return {p: getattr(self, p) for p in PARTS if getattr(self, p)}
 
 
+Travel = Literal["forward", "backward", "left", "right"]
+TRAVELS: tuple[Travel, ...] = get_args(Travel)
+
+
+class RoleTiming(BaseModel):
+    """Who starts a two-person exchange and when the other one answers.
+
+    phase "lead": the segment is `lead`'s action while the other waits; the answer is the next
+    segment. phase "response": the other's answer, starting where the lead's action ended
+    (`response` "after": "… who waves back") or at its contact ("contact": "… who stumbles
+    backwards", the segment boundary is the moment of contact). phase "both": one segment in
+    which the other acts during the lead's action (`response` "with": "the leader spins the
+    follower")."""
+    model_config = ConfigDict(extra="forbid")
+    lead: Literal[0, 1]
+    response: Literal["with", "after", "contact"]
+    phase: Literal["lead", "response", "both"]
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        if (self.phase == "both") != (self.response == "with"):
+            raise ValueError(f"a '{self.response}' answer does not fit phase '{self.phase}' "
+                             "('with' goes with 'both' only)")
+        return self
+
+
+# Optional segment fields added after plans were first stored: left out of the JSON when unset,
+# so a plan without them reads and writes exactly as before.
+_OPTIONAL = ("travel", "timing")
+
+
 class Segment(BaseModel):
     model_config = ConfigDict(extra="forbid")
     index: int = Field(ge=0)
@@ -189,6 +228,16 @@ class Segment(BaseModel):
     persons: list[int] = Field(min_length=1, max_length=2)
     roles: dict[Literal["0", "1"], str] | None = None
     repeat: int = Field(default=1, ge=1, le=20)
+    travel: Travel | None = None           # direction of travel relative to facing
+    timing: RoleTiming | None = None       # two people: who starts, who answers and when
+
+    @model_serializer(mode="wrap")
+    def _drop_unset(self, handler: SerializerFunctionWrapHandler) -> dict:
+        out = handler(self)
+        for key in _OPTIONAL:
+            if out.get(key) is None:
+                out.pop(key, None)
+        return out
 
     @model_validator(mode="after")
     def _frames(self):
@@ -227,6 +276,8 @@ class Plan(BaseModel):
                                  f"for {self.persons} person(s)")
             if s.roles is not None and self.persons != 2:
                 raise ValueError(f"{where}: roles are for two people only")
+            if s.timing is not None and self.persons != 2:
+                raise ValueError(f"{where}: timing is for two people only")
             expected = s.end
         if expected != total:
             raise ValueError(f"segments end at frame {expected}, but {self.seconds:g} s is "
