@@ -13,7 +13,8 @@ and marks the segment as synthetic.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
+from typing import Literal
 
 import numpy as np
 
@@ -66,17 +67,25 @@ class RetrievalGenerator:
         return float(np.hypot(*(pelvis[1] - pelvis[0])[[0, 2]]))
 
     def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator,
-                 after: list[dict] | None = None) -> RetrievalChoice:
+                 after: list[dict] | None = None,
+                 roles: Mapping[Literal["0", "1"], str] | None = None) -> RetrievalChoice:
         """The captured pieces for one segment; `after` holds the previous segment's last
-        piece per track, whose end pose the new pieces start from."""
+        piece per track, whose end pose the new pieces start from. `roles` (the plan's
+        {"0": text, "1": text}) gives each composed person their own text: "one pushes the
+        other, who stumbles backwards" draws a push for one and a stumble for the other."""
         idx, after = self.index, after or []
         if persons == 2 and idx.use_pair(prompt):
             return RetrievalChoice(mode="pair", synthetic=False, tracks=[
                 _pieces(idx.track(prompt, frames, rng, pair=True, after=_pair_end(after)))])
-        first = idx.track(prompt, frames, rng, after=after[0] if after else None)
+        texts = [prompt, prompt]
+        if persons == 2 and roles:
+            texts = [roles.get("0") or prompt, roles.get("1") or prompt]
+        first = idx.track(texts[0], frames, rng, after=after[0] if after else None)
         if persons == 1:
             return RetrievalChoice(mode="single", synthetic=False, tracks=[_pieces(first)])
-        second = idx.track(prompt, frames, rng, exclude={first[0]["clip"]},
+        # The same text for both: another capture for the second person, so they differ.
+        exclude = {first[0]["clip"]} if texts[0] == texts[1] else set()
+        second = idx.track(texts[1], frames, rng, exclude=exclude,
                            after=after[1] if len(after) > 1 else None)
         travel = max(self._travel(first), self._travel(second))
         return RetrievalChoice(mode="composed", synthetic=True,
@@ -103,7 +112,7 @@ class RetrievalGenerator:
         after = None
         for seg in plan.segments:
             seg.retrieval = self.retrieve(self.query(seg), seg.end - seg.start, req.persons,
-                                          _rng(seed, seg.index), after)
+                                          _rng(seed, seg.index), after, seg.roles)
             after = _ends(seg.retrieval)
         self._summarise(plan)
         return plan
@@ -114,7 +123,7 @@ class RetrievalGenerator:
         out = plan.model_copy(deep=True)
         seg, prev = out.segments[index], out.segments[index - 1].retrieval if index > 0 else None
         seg.retrieval = self.retrieve(self.query(seg), seg.end - seg.start, out.persons,
-                                      _rng(seed, index), _ends(prev) if prev else None)
+                                      _rng(seed, index), _ends(prev) if prev else None, seg.roles)
         self._summarise(out)
         return out
 
@@ -153,7 +162,7 @@ class RetrievalGenerator:
                 raise ValueError(f"plan segments must tile the motion; segment {seg.index} "
                                  f"spans {start}–{end}, expected to start at {expected}")
             retrieval = seg.retrieval or self.retrieve(self.query(seg), end - start, persons,
-                                                       _rng(seed, seg.index), after)
+                                                       _rng(seed, seg.index), after, seg.roles)
             after = _ends(retrieval)
             frames = self._render(stitcher, retrieval, persons)
             if any(len(f) != end - start for f in frames):
