@@ -99,11 +99,13 @@ def test_paper_examples_become_their_motion_words(table8):
     ("a person jumps", "a person jumps", {}),
     ("a person runs forward", "a person runs forward", {}),
     ("the man sits down", "a person sits down", {}),
+    # states kept during the motion are held poses, with the detail of the named pose
     ("a person spins while having his right arm upwards and the left arm extended forward",
-     "a person spins", {"right_arm": "holds the right arm upwards",
-                        "left_arm": "extends the left arm forward"}),
+     "a person spins", {"right_arm": "holds the right arm raised above the head",
+                        "left_arm": "holds the left arm straight out in front at shoulder height"}),
     ("a person hops forward with both arms raised", "a person hops forward",
-     {"left_arm": "raises the left arm", "right_arm": "raises the right arm"}),
+     {"left_arm": "holds the left arm raised above the head",
+      "right_arm": "holds the right arm raised above the head"}),
 ])
 def test_decomposition_into_base_and_part_edits(prompt, base, edits):
     (seg,) = _plan(prompt).segments
@@ -169,7 +171,9 @@ def test_two_people_who_does_what():
     assert [s.persons for s in named.segments] == [[0, 1], [0], [1]]
     other = _plan("they walk forward together, then one of them sits down while the other waves", 2)
     assert other.segments[1].persons == [0, 1]
-    assert "sits down" in other.segments[1].roles["1"] and "waves" in other.segments[1].roles["0"]
+    # "one … while the other …": the one who starts is person 0, both at the same time
+    assert "sits down" in other.segments[1].roles["0"] and "waves" in other.segments[1].roles["1"]
+    assert other.segments[1].timing.model_dump() == {"lead": 0, "response": "with", "phase": "both"}
     hi5 = _plan("two people high five", 2)          # unknown verb → the data's own phrase
     assert hi5.segments[0].prompt == "two people high-five" and hi5.segments[0].persons == [0, 1]
     assert any(r.startswith("similarity:") for r in hi5.reasons)

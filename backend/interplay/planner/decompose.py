@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from interplay.planner.manner.holds import held, keep
 from interplay.planner.verbs import VERBS, Verb, lookup, third
 
 ARM_WORDS = {"arm", "hand", "fist", "elbow", "wrist", "finger", "palm", "shoulder", "forearm",
@@ -122,8 +123,14 @@ def split_subject(text: str) -> tuple[str | None, str]:
     return None, text
 
 
+# A simultaneous phrase that is a state the body keeps ("with both arms raised", "holding the
+# hands on the hips"), not a movement ("while raising the left arm").
+_STATE = re.compile(r"^(?:(?:while|as)\s+)?(?:with|having|keeping|holding|still\s+holding)\b")
+
+
 def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb | None]:
     """(parts, instruction, verb) of one simultaneous phrase ("with the right arm raised")."""
+    state = _STATE.match(mod) is not None
     mod = re.sub(r"^(?:(?:while|as\s+(?:he|she|they|if|though|the\s+person)|with|having|keeping|"
                  r"still)\s+)+", "", mod).strip()
     first = mod.split(" ", 1)[0]
@@ -144,6 +151,8 @@ def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb
         obj = f"both {noun}"
     word = rest.split(" ", 1)[0] if rest else ""
     v = lookup(word)
+    if v and v[1] in ("past", "participle") and v[0].kind != "light" and state:
+        return parts, plain(f"holds {obj} {rest}"), v[0]               # "holds the left arm raised"
     if v and v[1] in ("past", "participle", "gerund") and v[0].kind != "light":
         return parts, plain(f"{third(v[0].base)} {obj} {rest[len(word):]}"), v[0]
     if _RESTING.match(rest):
@@ -181,8 +190,10 @@ def _lead_modifier(rest: str) -> str:
     return rest
 
 
-def decompose(clause: str, posture: str = "standing", last_parts: list[str] | None = None) -> Action:
-    """Base motion and part edits of one clause, given the posture the body is in."""
+def decompose(clause: str, posture: str = "standing", last_parts: list[str] | None = None,
+              hold: bool = False) -> Action:
+    """Base motion and part edits of one clause, given the posture the body is in; `hold`: the
+    clause's pose is kept to the end of its segment ("raises both arms [and keeps them up]")."""
     subject, rest = split_subject(clause.strip())
     rest = _lead_modifier(rest)
     first = rest.split(" ", 1)[0]
@@ -228,7 +239,15 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
         last = main_parts
     base_bits = []
     for mod in mods:
+        state = _STATE.match(mod) is not None
         for sub in _SPLIT_PARTS.split(mod):
+            kept = held(sub) if state or _STATE.match(sub) else {}
+            if kept:                                   # a named held pose, with its detail
+                edits.update(kept)
+                last = list(kept)
+                continue
+            if state and not _STATE.match(sub):
+                sub = f"with {sub}"                    # "… and the left arm extended": still held
             parts, words, v = _modifier_edit(sub, last)
             if parts:
                 add(parts, words)
@@ -237,6 +256,8 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
                 base_bits.append(plain(mod))
             elif v is not None and verb.kind == "part":
                 add(last, words)
+            elif v is not None and v.kind == "part" and v.part:     # "walks while waving"
+                add(*_default_limb(v, words))
             elif v is None and verb.kind != "part":
                 base_bits.append(plain(mod))
     if verb.kind == "part":
@@ -250,7 +271,17 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
         new_posture = verb.posture or posture
         if verb.base == "squat" and re.search(r"\b(?:down|on the floor|low)\b", main):
             new_posture = "squatting"
+    if hold or verb.base in ("hold", "keep"):
+        keep(edits, main, verb.kind == "part")
     return Action(text, subject, verb, re.sub(r"\s+", " ", base), edits, new_posture)
+
+
+def _default_limb(v: Verb, words: str) -> tuple[list[str], str]:
+    """A part verb that names no limb, on its default one: "waving" → the right hand waves."""
+    limb = (v.part or "arm").rstrip("s")
+    if v.part in ("arms", "legs"):
+        return [f"left_{limb}", f"right_{limb}"], words
+    return [f"right_{limb}"], f"{words} with the right {'hand' if limb == 'arm' else 'foot'}"
 
 
 def _both_handed(text: str) -> bool:

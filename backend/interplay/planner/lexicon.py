@@ -198,6 +198,9 @@ def rewrite(text: str) -> tuple[str, list[str]]:
     for entry, rx in _PATTERNS:
         def sub(m, entry=entry):
             out = _form(entry, m)
+            intro = (m.group("intro") or "").lower()
+            if out == entry.hold and not intro.endswith("ing") and not _verb_before(m):
+                out = f"stands {out}"                        # "hold a T-pose": the body stands
             det = (m.group("det") or "").lower()
             count = int(det) if det.isdigit() else _NUMBERS.get(det, 1)
             if count > 1:
@@ -206,6 +209,12 @@ def rewrite(text: str) -> tuple[str, list[str]]:
             return out
         text = rx.sub(sub, text)
     return text, reasons
+
+
+def _verb_before(m: re.Match) -> bool:
+    """Is there a motion verb in the clause before the match ("walks holding a T-pose")?"""
+    clause = re.split(r"[,.;]|\bthen\b", m.string[:m.start()])[-1]
+    return any((h := lookup(w)) and h[0].kind != "light" for w in clause.split())
 
 
 def find(text: str) -> Entry | None:

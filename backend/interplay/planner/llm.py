@@ -28,8 +28,17 @@ import httpx
 from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError
 
 from interplay.motion.skeleton import FPS
-from interplay.planner.durations import allocate
-from interplay.planner.schema import MAX_SEGMENTS, PartEdits, Plan, TrajectorySpec, readable
+from interplay.planner.durations import fit, need_of_text
+from interplay.planner.manner.travel import from_trajectory
+from interplay.planner.schema import (
+    MAX_SEGMENTS,
+    PartEdits,
+    Plan,
+    RoleTiming,
+    TrajectorySpec,
+    Travel,
+    readable,
+)
 
 MAX_ANSWER = 200_000     # characters of model output we are willing to parse
 MAX_BODY = 1_000_000     # bytes of the endpoint's answer read before giving up on it
@@ -50,6 +59,8 @@ class LLMSegment(BaseModel):
     roles: dict[str, Annotated[str, Field(max_length=500)]] | None = Field(default=None,
                                                                            max_length=2)
     repeat: Annotated[int, Strict()] = Field(default=1, ge=1, le=20)
+    travel: Travel | None = None
+    timing: RoleTiming | None = None
 
 
 class LLMAnswer(BaseModel):
@@ -75,10 +86,17 @@ the global path, without limb details ("a person walks in a circle"); `edits` gi
 left_arm, right_arm, left_leg and right_leg what that limb does at the same time ("raises the \
 left arm"), or null; `trajectory` is a path when the step asks for one (shape: line, arc, \
 circle, zigzag, s_curve, heart, figure_eight, square, spiral, polyline, free; clockwise seen \
-from above; size_m, distance_m, turns; direction forward|backward|left|right), else null. \
-Estimate `seconds` for each step from how long the movement takes (a jump about 1.5 s, a walk \
-of 5 m about 4 s). With two people, `persons` lists who moves (0 and/or 1) and `roles` says \
-what each does, e.g. {"0": "a person stands still", "1": "a person walks away"}.
+from above; size_m, distance_m, turns), else null. Walking or running backwards or sideways \
+is not a path: set `travel` (forward|backward|left|right, the way the body moves relative to \
+where it faces) and leave the trajectory null. A pose kept during the step ("with the arms \
+crossed", "hands on hips", "hold a T-pose") is an edit per arm starting "holds" with its \
+detail ("holds both arms crossed in front of the chest"). \
+Estimate `seconds` for each step from how long the movement needs (a jump about 1.5 s, a walk \
+of 5 m about 4 s, a sprint at least 2.5 s). With two people, `persons` lists who moves (0 \
+and/or 1) and `roles` says what each does, e.g. {"0": "a person stands still", "1": "a person \
+walks away"}; when one answers the other ("one pushes the other, who stumbles backwards"), \
+use one step for the action and one for the answer, each with `timing` {"lead": who starts, \
+"response": "contact"|"after"|"with", "phase": "lead"|"response"|"both"}.
 Write every prompt as "a person ..." in the present tense. Do not include reasoning outside \
 the JSON. Answer with one JSON object only, matching this JSON schema:
 """
@@ -137,16 +155,23 @@ def to_plan(answer: LLMAnswer, prompt: str, persons: int, seconds: float | None)
     total = max(1, round((seconds if seconds else min(sum(est), 60.0)) * FPS))
     if len(est) > total // 10:
         raise ValueError(f"{len(est)} steps do not fit in {total / FPS:g} s")
-    frames, start = allocate(est, total), 0
+    # The model's seconds as each step's want; what it needs at least and whether it may take
+    # spare time from its base verb, as the embedded planner fits them (durations.fit).
+    needs = [need_of_text(s.base, s.seconds, s.repeat) for s in answer.segments]
+    frames, start = fit(needs, total), 0
     segments: list[dict[str, Any]] = []
     for i, (s, n) in enumerate(zip(answer.segments, frames)):
         if any(p >= persons or p < 0 for p in s.persons):
             raise ValueError(f"segment {i}: persons {s.persons} for a plan of {persons} person(s)")
         roles = ({k: v for k, v in s.roles.items() if k in ("0", "1")} or None) if s.roles and \
             persons == 2 else None
-        segments.append({**s.model_dump(exclude={"persons", "roles", "seconds"}), "index": i,
-                         "persons": sorted(set(s.persons)), "roles": roles, "seconds": n / FPS,
-                         "start": start, "end": start + n})
+        trajectory, travel = from_trajectory(s.trajectory, s.travel)   # no backwards paths
+        segments.append({**s.model_dump(exclude={"persons", "roles", "seconds", "trajectory",
+                                                 "travel", "timing"}),
+                         "index": i, "persons": sorted(set(s.persons)), "roles": roles,
+                         "seconds": n / FPS, "start": start, "end": start + n,
+                         "trajectory": trajectory, "travel": travel,
+                         "timing": s.timing if persons == 2 else None})
         start += n
     # Validated from plain data: `persons` and the segments are checked by the Plan schema.
     return Plan.model_validate({"prompt": prompt, "rewritten": answer.rewritten, "persons": persons,

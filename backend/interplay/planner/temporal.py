@@ -36,6 +36,7 @@ class Clause:
     text: str
     repeat: int = 1
     group: tuple[int, int] | None = None   # (k, n): k-th of n clauses split from one action
+    hold: str = ""                         # words that keep its pose to the end ("waits")
 
 
 _SENT = re.compile(r"(?<=[.!?;])\s+|;\s*|(?<=[a-z])\.\s*$")
@@ -79,11 +80,37 @@ def _verb_in(word: str, like: str) -> str | None:
     return gerund(hit[0].base) if form == "gerund" else third(hit[0].base)
 
 
+# A user's imperative ("walk a few steps and wave") in the third person the rules read: the
+# verbs that open the prompt and each of its clauses, and "you" as the person.
+_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|before|after|while)\s+)+)"
+                    r"([a-z-]+)")
+_YOU = ((r"\byourself\b", "themselves"), (r"\byour\b", "their"),
+        (r"\byou\s+(?=can|could|are|were|want|like|have)\b", "they "), (r"\byou\b", "them"))
+
+
+def _imperative(t: str) -> str:
+    """"squat down, stand up and walk away" → "squats down, stands up and walks away" (only
+    when the prompt opens with a verb's base form: "a tired walk" is not an order)."""
+    first = t.split(" ", 1)[0] if t else ""
+    hit = lookup(first)
+    if hit is None or hit[1] != "base":
+        return t
+
+    def verb(m: re.Match) -> str:
+        h = lookup(m.group(2))
+        return m.group(1) + (third(h[0].base) if h and h[1] == "base" else m.group(2))
+    return _OPENS.sub(verb, t)
+
+
 def normalize(text: str) -> str:
     """Lower case, present tense chains: "is running" → "runs", "starts hopping" → "hops",
-    "transitions to sitting" → "sits", "gets up" / "rises to standing" → "stands up"."""
+    "transitions to sitting" → "sits", "gets up" / "rises to standing" → "stands up";
+    imperatives in the third person ("walk, then sit" → "walks, then sits", "your" → "their")."""
     t = text.lower().replace("’", "'").replace("‘", "'").replace("“", '"').replace("”", '"')
     t = re.sub(r"\"|(?<![a-z])'|'(?![a-z])", "", t)
+    for rx, word in _YOU:
+        t = re.sub(rx, word, t)
+    t = _imperative(t.strip())
     t = re.sub(r"\b(?:is|are|was|were|has\s+been|have\s+been)\s+(\w+ing)\b",
                lambda m: _verb_in(m.group(1), "runs") or m.group(0), t)
     t = re.sub(r"\b(get|gets|got|getting)\s+(?:back\s+)?up\b",

@@ -69,6 +69,11 @@ VERBS: dict[str, Verb] = {v.base: v for v in [
     _v("collapse", "whole", 1.5, posture="lying"),
     _v("trip", "whole", 1.5, posture="lying"),
     _v("stumble", "whole", 1.5, posture="standing"),
+    _v("stagger", "whole", 1.5, posture="standing"),
+    _v("stop", "whole", 2.5, posture="standing"),      # slows down, then is seen standing
+    _v("follow", "travel", 4.0, posture="standing", speed=1.3),
+    _v("chase", "travel", 3.0, posture="standing", speed=3.0),
+    _v("lead", "travel", 4.0, posture="standing", speed=1.0),
     _v("dive", "whole", 1.5, posture="lying"),
     _v("roll", "whole", 2.0, posture="lying"),
     _v("cartwheel", "whole", 2.0, posture="standing"),
@@ -80,7 +85,7 @@ VERBS: dict[str, Verb] = {v.base: v for v in [
     _v("lean", "whole", 2.0),
     _v("dance", "whole", 4.0, posture="standing"),
     _v("stretch", "part", 2.0, "arms"),
-    _v("hug", "whole", 2.5),
+    _v("hug", "whole", 2.5), _v("embrace", "whole", 2.5),
     _v("lunge", "whole", 2.0, posture="standing"),
     _v("land", "whole", 1.5),
     _v("dodge", "whole", 1.5, posture="standing"),
@@ -101,7 +106,8 @@ VERBS: dict[str, Verb] = {v.base: v for v in [
     _v("hold", "part", 2.0, "arm"), _v("keep", "light", 2.0),
     _v("rest", "part", 2.0, "arm"), _v("put", "part", 1.5, "arm"),
     _v("place", "part", 1.5, "arm"), _v("press", "part", 1.5, "arms"),
-    _v("push", "part", 1.5, "arms"), _v("pull", "part", 1.5, "arms"),
+    _v("push", "part", 1.5, "arms"), _v("shove", "part", 1.5, "arms"),
+    _v("hit", "part", 1.0, "arm"), _v("tackle", "whole", 1.5, posture="standing"), _v("pull", "part", 1.5, "arms"),
     _v("catch", "part", 1.5, "arms"), _v("shoot", "part", 1.5, "arm"),
     _v("dribble", "part", 2.0, "arm"), _v("chop", "part", 1.0, "arm"),
     _v("circle", "part", 2.0, "arm"), _v("rub", "part", 2.0, "arms"),
@@ -137,6 +143,7 @@ _IRREGULAR = {  # base: (third, gerund, past, participle)
     "spread": ("spreads", "spreading", "spread", "spread"),
     "curtsy": ("curtsies", "curtsying", "curtsied", "curtsied"),
     "lean": ("leans", "leaning", "leaned", "leaned"),
+    "lead": ("leads", "leading", "led", "led"), "hit": ("hits", "hitting", "hit", "hit"),
 }
 _DOUBLE = {"hop", "skip", "step", "jog", "tap", "trip", "flip", "grab", "chop", "drop", "stop",
            "nod", "clap", "shrug", "hug", "pat", "stir", "slap", "squat", "rub", "stab", "bob"}

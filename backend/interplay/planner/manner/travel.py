@@ -1,0 +1,78 @@
+"""Direction of travel: which way a moving body goes relative to where it faces (the segment's
+`travel`), read from the words, and kept apart from the path.
+
+    direction("walks backwards", VERBS["walk"])               → "backward"
+    direction("steps sideways to the left", VERBS["step"])    → "left"
+    direction("jogs forward", VERBS["jog"])                   → "forward"
+    direction("walks to the left", VERBS["walk"])             → None   (a turn, then a walk: a path)
+    direction("leans back", VERBS["lean"])                    → None   (the body does not travel)
+
+Why apart: a backwards walk planned as a path behind the person is followed by the trajectory
+stage by turning the person round and walking forward. As `travel` the body keeps facing
+forward and moves backwards; `untangle` drops a straight path that only restates the direction
+(its length still sets the segment's duration).
+"""
+
+from __future__ import annotations
+
+import re
+
+from interplay.planner.schema import TrajectorySpec, Travel
+from interplay.planner.verbs import Verb
+
+# Whole-body verbs that move the body somewhere (a jump forward, a stumble backwards).
+MOVING = {"jump", "leap", "stumble", "step", "lunge", "slide", "dodge", "roll", "fall", "topple",
+          "trip", "stagger"}
+# Verbs whose "to the left" is a step sideways, not a turn and a walk that way.
+LATERAL = {"step", "shuffle", "hop", "jump", "leap", "slide", "dodge", "lunge", "skip"}
+_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
+                   r"(?<!the\s)(?<!their\s)(?<!his\s)(?<!her\s)(?<!its\s)(?<!your\s)\bback\b"
+                   r"(?!\s+(?:up|to|towards?|home|and\s+forth|into|in\b|at\b|on\b|down|where|"
+                   r"from|of\b|onto|inside|over))")
+_SIDEWAYS = re.compile(r"\bsideways\b|\bside[\s-]?steps?\b|\bside[\s-]?stepping\b|\bstrafes?\b|"
+                       r"\bcrab[\s-]?walks?\b|\bsideward")
+_SIDE = re.compile(r"\b(?:to(?:wards)?\s+(?:the|their|his|her|your)\s+|to\s+)?(left|right)(?:wards?)?\b")
+_FORWARD = re.compile(r"\bforwards?\b|\bahead\b")
+
+
+def direction(text: str, verb: Verb | None) -> Travel | None:
+    """The direction of travel a clause states for its body, or None (not stated, or a body
+    that does not travel)."""
+    if verb is None or not (verb.kind == "travel" or verb.base in MOVING):
+        return None
+    t = text.lower()
+    if _BACK.search(t):
+        return "backward"
+    side = _SIDE.search(t)
+    if side and (_SIDEWAYS.search(t) or verb.base in LATERAL):
+        return "left" if side.group(1) == "left" else "right"
+    if _SIDEWAYS.search(t):
+        return "left"            # "steps sideways", side unsaid: one side, said in `reasons`
+    if _FORWARD.search(t):
+        return "forward"
+    return None
+
+
+def untangle(trajectory: TrajectorySpec | None, travel: Travel | None
+             ) -> tuple[TrajectorySpec | None, float | None]:
+    """(trajectory to keep, metres it stated): a straight path that only says the direction
+    of travel (a line or two-point polyline backwards or sideways) is dropped, so nothing
+    turns the person round to follow it; a shape (circle, zigzag …) or a forward line stays."""
+    if trajectory is None or travel in (None, "forward"):
+        return trajectory, None
+    straight = trajectory.shape == "line" or (
+        trajectory.shape == "polyline" and trajectory.turn_at is None
+        and len(trajectory.waypoints or []) == 2)
+    if not straight or (trajectory.direction or "forward") != travel:
+        return trajectory, None
+    return None, trajectory.distance_m
+
+
+def from_trajectory(trajectory: TrajectorySpec | None, travel: Travel | None
+                    ) -> tuple[TrajectorySpec | None, Travel | None]:
+    """An LLM's plan: a backwards line it wrote as a path becomes `travel` (the embedded
+    planner never writes one)."""
+    if travel is None and trajectory is not None and trajectory.direction == "backward":
+        travel = "backward"
+    kept, _ = untangle(trajectory, travel)
+    return kept, travel

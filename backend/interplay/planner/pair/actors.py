@@ -1,0 +1,60 @@
+"""Who acts in a clause, for two people: indices 0 and 1.
+
+    actors("two people", 2, None, {}, "two people shake hands")   → [0, 1]
+    actors("one", 2, None, {}, "one walks away")                  → [1]  (0 anchors the frame)
+    actors("the other", 2, [1], {}, "the other sits")             → [0]
+    actors("the man", 2, None, names, …) → the man's index, kept in `names` for later clauses
+
+"one" acting alone is the second person: the first anchors the shared frame (their start
+pelvis is the origin) and stays. In an exchange with "the other" (`roles.py`) the one who
+starts is person 0.
+"""
+
+from __future__ import annotations
+
+import re
+
+BOTH = re.compile(r"^(?:two\s+(?:people|persons|men|women|boys|girls|friends|dancers|players)|they|"
+                  r"both(?:\s+of\s+them)?|the\s+(?:two|couple|pair|dancers|players|partners|friends)"
+                  r"(?:\s+\w+)?|everyone|each\s+(?:person|of\s+them)|we|a\s+couple)$")
+MUTUAL = re.compile(r"\b(?:each\s+other|one\s+another|together|shake\s+hands|shakes\s+hands|hug|"
+                    r"hugs|high[\s-]five|salsa|tango|waltz|partner)\b")
+FIRST = re.compile(r"^(?:the\s+)?(?:first(?:\s+(?:person|one))?|person\s+(?:1|one|a)|leader)$")
+SECOND = re.compile(r"^(?:the\s+)?(?:second(?:\s+(?:person|one))?|person\s+(?:2|two|b)|follower|"
+                    r"partner)$")
+OTHER = re.compile(r"^(?:the\s+)?other(?:\s+(?:one|person))?$")
+ONE = re.compile(r"^(?:one|one\s+(?:of\s+them|person)|someone|a\s+person)$")
+
+
+def actors(subject: str | None, persons: int, prev: list[int] | None, names: dict,
+           text: str) -> list[int]:
+    """Who acts in a clause: indices into the people (0-based). `names` maps the nouns seen
+    so far ("man", "woman") to people; `prev` is who acted in the clause before."""
+    if persons == 1:
+        return [0]
+    s = re.sub(r"\s+", " ", (subject or "").strip())
+    if MUTUAL.search(text) or BOTH.match(s):
+        return [0, 1]
+    if not s:
+        return prev or [0, 1]
+    pair = re.match(r"^(?:a|an|the)?\s*(\w+) and (?:a|an|the)?\s*(\w+)$", s)
+    if pair:
+        names.update({pair.group(1): 0, pair.group(2): 1})
+        return [0, 1]
+    if FIRST.match(s):
+        return [0]
+    if SECOND.match(s):
+        return [1]
+    if OTHER.match(s):
+        return [1 - prev[0]] if prev and len(prev) == 1 else [0]
+    if ONE.match(s):
+        return [1]
+    return [person(s, names)]
+
+
+def person(noun_phrase: str, names: dict) -> int:
+    """The index of a named person ("the man"), given the next free one when new."""
+    noun = noun_phrase.split()[-1]
+    if noun not in names:
+        names[noun] = 0 if 0 not in names.values() else 1
+    return names[noun]
