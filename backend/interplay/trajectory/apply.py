@@ -16,25 +16,23 @@ Steps, all plain numpy over plain data:
    a step turn, not a snap) and the motion's own travel direction (CoMA D.2 replaces the
    root's rotational velocity so the facing direction rotates with the path). The offset
    between facing and travel direction is kept, so side steps and backwards walks keep
-   theirs; limbs keep their local motion; the sway is turned with the frame.
+   theirs; limbs keep their local motion; the sway is turned with the frame. With a
+   direction of travel (backward, left, right: travel.py) the facing is held at the tangent
+   rotated by it instead: nobody is turned round to walk a path backwards.
 4. The turning makes planted feet slide round the pelvis; footlock.py pins them with a short
    IK on the legs and, where a leg cannot reach, a small shift of the whole body (see there),
    so feet skate no more than in the original.
 
-Placement: a curve is drawn in the person's start frame (origin at the pelvis, +Z where they
-face, +X their left: the planner's convention), or along their starting travel direction, or
-in world coordinates (a path drawn on the studio floor); see anchor_pose.
-Length: by default (`scale_to_motion=True`) the curve is scaled to the distance the motion
-walks, so the motion traces the whole shape and ends where the curve ends, at its own speed.
-With `scale_to_motion=False` the curve keeps its size and the speed is untouched: the motion
-stops where its walk runs out (before the curve's end), or, if it walks further than the
-curve is long, carries on straight along the curve's last tangent. With `retime=True` as well
-(drawn paths), the speed profile is scaled so the motion covers the whole curve and ends at
-its end.
-Motions that barely travel (standing, squats: less than `min_travel` metres) are left in place
-(moved to the curve's start only when the curve is anchored to the world): spreading the curve
-over them at a walking pace would slide a standing person over the floor, every frame a skate;
-a trajectory needs a motion that walks, which is the generator's job.
+Placement (anchor_pose): in the person's start frame (origin at the pelvis, +Z where they
+face, +X their left: the planner's convention), along their starting travel direction, or in
+world coordinates (a path drawn on the studio floor). Length: by default the curve is scaled
+to the distance the motion walks (it traces the whole shape at its own speed);
+`scale_to_motion=False` keeps the curve's size and the speed (the motion stops where its walk
+runs out, or carries on along the last tangent), and with `retime=True` (drawn paths) the
+speed is scaled to cover the whole curve. Motions that barely travel (less than `min_travel`
+metres) are left in place (moved to the curve's start only when anchored to the world):
+spreading a curve over a standing person slides them over the floor; a trajectory needs a
+motion that walks, which is the generator's job (docs/trajectory.md).
 """
 
 from __future__ import annotations
@@ -50,6 +48,7 @@ from interplay.motion.metrics import person_metrics
 from interplay.planner.schema import TrajectorySpec
 from interplay.trajectory import bspline
 from interplay.trajectory.curves import drop_repeats, length, make_curve
+from interplay.trajectory.travel import check, facing_fix, spec_travel
 
 
 @dataclass(frozen=True)
@@ -194,6 +193,7 @@ def travel(joints: np.ndarray, fps: float = sk.FPS, cfg: TrajectoryConfig = DEFA
     return Travel(path, s, heading, True)
 
 
+_split = travel          # map_trajectory's `travel` argument is the direction of travel
 ANCHORS = ("facing", "travel", "world")
 
 
@@ -231,17 +231,22 @@ def _world_curve(curve_points, joints: np.ndarray, tr: Travel, fps: float,
 
 
 def map_trajectory(joints: np.ndarray, curve_points, offsets: np.ndarray | None = None,
-                   fps: float = sk.FPS, cfg: TrajectoryConfig = DEFAULT) -> dict:
+                   fps: float = sk.FPS, cfg: TrajectoryConfig = DEFAULT,
+                   travel: str | None = None) -> dict:
     """Map one person's motion (T, 22, 3) onto a ground curve (N, 2). Returns
     {"joints": (T, 22, 3), "curve": the smoothed world curve (M, 2) as used, "scale": factor
     applied to the curve, "moving": whether the motion travels, "turn": (T,) radians each frame
-    was turned}. With offsets (22, 3) the result is refitted on those bone lengths."""
+    was turned, "facing_fix": the constant turn (radians) a direction of travel added}. With
+    offsets (22, 3) the result is refitted on those bone lengths. `travel` (forward / backward
+    / left / right) holds the facing at the path's tangent rotated by that direction of travel
+    (travel.py): a person walking backwards along any path is never turned round."""
+    check(travel)
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or len(joints) < 1:
         raise ValueError(f"expected joints of shape (T, 22, 3), got {joints.shape}")
     if not np.all(np.isfinite(joints)):
         raise ValueError("joints contain NaN or infinite values")
-    tr = travel(joints, fps, cfg)
+    tr = _split(joints, fps, cfg)
     world = _world_curve(curve_points, joints, tr, fps, cfg)
     scale = 1.0
     if tr.moving and cfg.scale_to_motion:
@@ -261,9 +266,12 @@ def map_trajectory(joints: np.ndarray, curve_points, offsets: np.ndarray | None 
         # feet are pinned below, so a faster walk strides, not skates).
         speed = curve.length / max(tr.s[-1], 1e-9)
         progress = tr.s * speed
+    fix = 0.0
     if tr.moving:
         target, head = curve.at(progress)
-        turn = _gaussian(head, cfg.turn_smooth_s * fps) - tr.heading
+        moving = np.linalg.norm(np.gradient(tr.path, axis=0), axis=1) * fps >= cfg.min_speed
+        fix = facing_fix(joints, tr.heading, moving, travel)
+        turn = _gaussian(head, cfg.turn_smooth_s * fps) - tr.heading + fix
         centre = tr.path
     else:
         # One rigid move of the whole clip (none unless the curve is anchored to the world).
@@ -278,15 +286,21 @@ def map_trajectory(joints: np.ndarray, curve_points, offsets: np.ndarray | None 
     if offsets is not None:
         out, _ = fit_to_skeleton(out, np.asarray(offsets, dtype=np.float64))
     return {"joints": out, "curve": curve.points, "scale": float(scale), "speed": float(speed),
-            "moving": tr.moving, "turn": turn}
+            "moving": tr.moving, "turn": turn, "facing_fix": fix}
 
 
 def apply_trajectory(joints: np.ndarray, curve, offsets: np.ndarray | None = None,
-                     fps: float = sk.FPS, cfg: TrajectoryConfig = DEFAULT) -> np.ndarray:
+                     fps: float = sk.FPS, cfg: TrajectoryConfig = DEFAULT,
+                     travel: str | None = None) -> np.ndarray:
     """Joints (T, 22, 3) of the motion walking along `curve`: ground points (N, 2) or a
-    TrajectorySpec-like dict (see curves.make_curve). See the module doc for what is kept."""
-    points = make_curve(curve) if isinstance(curve, (dict, TrajectorySpec)) else curve
-    return map_trajectory(joints, points, offsets, fps, cfg)["joints"]
+    TrajectorySpec-like dict (see curves.make_curve). See the module doc for what is kept.
+    `travel` is the direction of travel relative to facing (map_trajectory); for a spec
+    without one it is the spec's own (travel.spec_travel: "walks backwards" → backward)."""
+    spec = isinstance(curve, (dict, TrajectorySpec))
+    if travel is None and spec:
+        travel = spec_travel(curve)
+    points = make_curve(curve) if spec else curve
+    return map_trajectory(joints, points, offsets, fps, cfg, travel)["joints"]
 
 
 def skating(joints: np.ndarray, fps: float = sk.FPS) -> float:
