@@ -2,7 +2,10 @@
 motion found by text (`index.RetrievalIndex`) and stitched (`stitch.Stitcher`). For two
 people it uses a two-person capture when the prompt matches one (salsa); otherwise it composes
 two single-person captures, facing each other 1.5 m apart (side by side when they travel),
-and marks the segment as synthetic.
+and marks the segment as synthetic. One person's segment is drawn for what its words ask
+beyond the nearest captures (`tracks.py`: direction of travel, side, counts, postures, with
+mirrored and time-reversed views of the captures); a track shorter than its segment holds its
+last pose to the segment's end.
 
     gen = RetrievalGenerator(RetrievalIndex(default_clips(), get_encoder()))
     plan = gen.plan(Request("a person walks forward then jumps", seconds=6, seed=3))
@@ -27,7 +30,9 @@ from interplay.generators.plan import (
     Source,
 )
 from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.retrieval.intent import intent
 from interplay.generators.retrieval.stitch import Stitcher
+from interplay.generators.retrieval.tracks import single_track
 from interplay.motion.motion import Motion
 from interplay.motion.skeleton import PELVIS
 from interplay.planner.plan import plan as make_plan
@@ -68,12 +73,18 @@ class RetrievalGenerator:
 
     def retrieve(self, prompt: str, frames: int, persons: int, rng: np.random.Generator,
                  after: list[dict] | None = None,
-                 roles: Mapping[Literal["0", "1"], str] | None = None) -> RetrievalChoice:
+                 roles: Mapping[Literal["0", "1"], str] | None = None,
+                 repeat: int = 1, direction: str | None = None) -> RetrievalChoice:
         """The captured pieces for one segment; `after` holds the previous segment's last
         piece per track, whose end pose the new pieces start from. `roles` (the plan's
         {"0": text, "1": text}) gives each composed person their own text: "one pushes the
-        other, who stumbles backwards" draws a push for one and a stumble for the other."""
+        other, who stumbles backwards" draws a push for one and a stumble for the other.
+        `repeat` and `direction` are the segment's count and direction of travel (its
+        `travel`), for what one person's track must do (tracks.py)."""
         idx, after = self.index, after or []
+        if persons == 1:      # what the words ask beyond the nearest captures: tracks.py
+            return RetrievalChoice(mode="single", synthetic=False, tracks=[_pieces(single_track(
+                idx, prompt, frames, rng, after[0] if after else None, intent(prompt, repeat, direction)))])
         if persons == 2 and idx.use_pair(prompt):
             return RetrievalChoice(mode="pair", synthetic=False, tracks=[
                 _pieces(idx.track(prompt, frames, rng, pair=True, after=_pair_end(after)))])
@@ -112,7 +123,8 @@ class RetrievalGenerator:
         after = None
         for seg in plan.segments:
             seg.retrieval = self.retrieve(self.query(seg), seg.end - seg.start, req.persons,
-                                          _rng(seed, seg.index), after, seg.roles)
+                                          _rng(seed, seg.index), after, seg.roles,
+                                          seg.repeat, seg.travel)
             after = _ends(seg.retrieval)
         self._summarise(plan)
         return plan
@@ -123,7 +135,8 @@ class RetrievalGenerator:
         out = plan.model_copy(deep=True)
         seg, prev = out.segments[index], out.segments[index - 1].retrieval if index > 0 else None
         seg.retrieval = self.retrieve(self.query(seg), seg.end - seg.start, out.persons,
-                                      _rng(seed, index), _ends(prev) if prev else None, seg.roles)
+                                      _rng(seed, index), _ends(prev) if prev else None, seg.roles,
+                                      seg.repeat, seg.travel)
         self._summarise(out)
         return out
 
@@ -135,9 +148,10 @@ class RetrievalGenerator:
             return [(np.array([half, 0.0, 0.0]), 0.0), (np.array([-half, 0.0, 0.0]), 0.0)]
         return [(np.array([-half, 0.0, 0.0]), np.pi / 2), (np.array([half, 0.0, 0.0]), -np.pi / 2)]
 
-    def _render(self, stitcher: Stitcher, retrieval: RetrievalChoice, persons: int
-                ) -> list[np.ndarray]:
-        """One segment's frames per person, continuing what the stitcher has output so far."""
+    def _render(self, stitcher: Stitcher, retrieval: RetrievalChoice, persons: int,
+                length: int | None = None) -> list[np.ndarray]:
+        """One segment's frames per person, continuing what the stitcher has output so far; a
+        person's track shorter than `length` holds its last pose to the end (tracks.py)."""
         tracks = [self.index.pieces([p.model_dump() for p in t]) for t in retrieval.tracks]
         if retrieval.mode == "pair":
             parts = [stitcher.add_pair(piece) for piece in tracks[0]]
@@ -148,6 +162,9 @@ class RetrievalGenerator:
         out = []
         for person, track in enumerate(tracks):
             frames = [stitcher.add_single(person, piece[0], place[person]) for piece in track]
+            short = (length or 0) - sum(len(f) for f in frames)
+            if short > 0:
+                frames.append(stitcher.hold(person, short))
             out.append(np.concatenate(frames))
         return out
 
@@ -162,9 +179,10 @@ class RetrievalGenerator:
                 raise ValueError(f"plan segments must tile the motion; segment {seg.index} "
                                  f"spans {start}–{end}, expected to start at {expected}")
             retrieval = seg.retrieval or self.retrieve(self.query(seg), end - start, persons,
-                                                       _rng(seed, seg.index), after, seg.roles)
+                                                       _rng(seed, seg.index), after, seg.roles,
+                                                       seg.repeat, seg.travel)
             after = _ends(retrieval)
-            frames = self._render(stitcher, retrieval, persons)
+            frames = self._render(stitcher, retrieval, persons, end - start)
             if any(len(f) != end - start for f in frames):
                 raise ValueError(f"segment {seg.index}: the plan's pieces do not last "
                                  f"{end - start} frames")

@@ -187,6 +187,17 @@ class Stitcher:
                       rigid_yaw(piece.tail, yaw, pivot, target), piece.offsets)
         return self._finish(person, moved)
 
+    def hold(self, person: int, n: int) -> np.ndarray:
+        """n frames of the person's last output pose, kept still (a posture reached and held:
+        sat down, lying, the end of a counted action); what follows cross-fades from it."""
+        last = self.last[person]
+        if last is None:
+            raise ValueError("only a started person can hold a pose")
+        held = np.repeat(last[-1:], n, axis=0)
+        self.last[person] = np.concatenate([last, held])[-HEADING:]
+        self.tail[person] = np.repeat(last[-1:], FADE, axis=0)
+        return held.astype(np.float32)
+
     def add_pair(self, pieces: list[Piece]) -> list[np.ndarray]:
         """Append a two-person piece (both people of one capture, same frames), moved as one."""
         pieces = [self._prepared(i, p) for i, p in enumerate(pieces)]

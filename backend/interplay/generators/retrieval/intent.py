@@ -1,0 +1,150 @@
+"""What a segment asks for beyond its words' nearest captures: the direction of travel
+relative to where the body faces, the side of a named limb, an exact count of an action, the
+posture it starts in and the one it ends in (and holds).
+
+    intent("a person kicks twice with the right leg", repeat=2)
+        → Intent(side="right", action="kick", count=2)
+    intent("a person runs backwards")            → Intent(travel="backward")
+    intent("a person stands up from sitting on the floor") → Intent(start="sitting", end="standing")
+
+Read from the segment's prompt, except what the plan says itself: `repeat` (the planner's
+count) and `travel` (the planner's direction of travel, when its Segment carries one). These
+are small word rules meant to be replaced by the plan's own fields as the planner grows them.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+TRAVELS = ("backward", "left", "right", "sideways")
+ACTIONS = ("jump", "squat", "kick", "punch", "step")
+POSTURES = ("standing", "sitting", "lying", "kneeling")
+LOW = ("sitting", "lying", "kneeling")
+
+
+@dataclass(frozen=True)
+class Intent:
+    travel: str | None = None   # backward / left / right / sideways (either side); None: forward or free
+    side: str | None = None     # left / right: the side of a named limb
+    action: str | None = None   # jump / squat / kick / punch / step (what a count counts)
+    count: int | None = None    # exactly this many of the action (None: no number asked)
+    start: str | None = None    # the posture it starts in (None: standing, or where it is)
+    end: str | None = None      # the posture it ends in and holds (None: no posture asked)
+    rises: bool = False         # it gets up (from wherever the previous segment left it)
+
+    @property
+    def plain(self) -> bool:
+        return self == Intent()
+
+
+_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bbackpedal\w*|\bmoonwalk\w*|"
+                   r"\b(?:step|steps|stepping|stepped|walk|walks|walking|move|moves|moving|"
+                   r"run|runs|running|jog|jogs|jogging|shuffles?|shuffling)\s+back\b"
+                   r"(?!\s+(?:up|to|home|and|into|in)\b)")
+_SIDEWAYS = re.compile(r"\bsideways\b|\bside[\s-]?(?:steps?|stepping|shuffl\w*)\b|\bstrafe\w*|"
+                       r"\bcrab[\s-]?walk\w*|\bsteps?\s+(?:to|towards)\s+(?:the|his|her|their)\s+"
+                       r"(?:left|right)\b")
+_LIMB = r"(?:leg|foot|feet|knee|arm|hand|fist|elbow|shoulder)s?"
+_SIDE = re.compile(rf"\b(left|right)(?:[\s-]+(?:hand(?:ed)?|footed))?\s+{_LIMB}\b|"
+                   rf"\b(left|right)[\s-]+(?:handed|footed)\b")
+_LEFT_RIGHT = re.compile(r"\b(left|right)\b")
+_ACTION = [(r"\b(?:jump|jumps|jumped|jumping|hop|hops|hopped|hopping)\b", "jump"),
+           (r"\bsquat\w*\b", "squat"),
+           (r"\bkick\w*\b", "kick"),
+           (r"\b(?:punch\w*|jab\w*|uppercut\w*)\b", "punch"),
+           (r"\bsteps?\b", "step")]
+_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+            "eight": 8, "nine": 9, "ten": 10}
+_ONCE = re.compile(r"\bonce\b|\bone\s+time\b|\ba\s+single\b")
+_TIMES = re.compile(r"\b(twice|thrice)\b|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+                    r"\s+(?:times\b|(?:\w+\s+)?(?:jumps|hops|squats|kicks|punches|steps)\b)")
+_ONE = re.compile(r"\b(?:a|an|one|single)\s+(?:(?!(?:few|couple|bit|little|lot|series|number|in|"
+                  r"on|at|with|your|his|her|their|the|of|to|for|and)\b)[a-z-]+\s+){0,2}?"
+                  r"(?:jump|hop|squat|kick|punch|jab|step)\b")
+_FROM = re.compile(r"\bfrom\s+(?:a\s+|the\s+|his\s+|her\s+|their\s+)?(lying|lying\s+down|"
+                   r"sitting|seated|sitting\s+down|kneeling|the\s+floor|the\s+ground|floor|ground)")
+_RISE = re.compile(r"\b(?:gets?|getting|got)\s+(?:back\s+)?up\b|\bstands?\s+(?:back\s+)?up\b|"
+                   r"\bstanding\s+(?:back\s+)?up\b|\brises?\b|\brising\b")
+_ENDS = [(r"\bsits?\s+up\b|\bsitting\s+up\b", "sitting"),
+         (r"\b(?:sits?|sitting|sat)\b(?!\s+up)|\btakes?\s+a\s+seat\b", "sitting"),
+         (r"\b(?:lies|lie|lying|lays?|laying)\s+(?:down|on)\b|\blies\b", "lying"),
+         (r"\bkneel\w*\b|\bon\s+(?:one|both|his|her|their)\s+knees?\b", "kneeling")]
+
+
+def travel_of(prompt: str) -> str | None:
+    """backward / left / right / sideways (either side) when the prompt asks to move that way
+    relative to where the body faces ("walks backwards", "steps sideways to the left"); None
+    for forward or free travel ("walks to the left" turns and walks: a path, not a direction
+    of travel)."""
+    t = prompt.lower()
+    if _BACK.search(t):
+        return "backward"
+    if _SIDEWAYS.search(t):
+        side = _LEFT_RIGHT.findall(t[_SIDEWAYS.search(t).start():])  # type: ignore[union-attr]
+        return side[0] if side else "sideways"
+    return None
+
+
+def side_of(prompt: str) -> str | None:
+    """The side of the limb a prompt names ("with the right leg", "your left fist"), if it
+    names one side only."""
+    sides = {a or b for a, b in _SIDE.findall(prompt.lower())}
+    return sides.pop() if len(sides) == 1 else None
+
+
+def action_of(prompt: str) -> str | None:
+    t = prompt.lower()
+    return next((a for rx, a in _ACTION if re.search(rx, t)), None)
+
+
+def count_of(prompt: str, repeat: int = 1) -> int | None:
+    """How many times the action is asked for: the plan's repeat when over 1, else a number
+    in the words ("twice", "three jumps", "once", "a tuck jump"); None when none is said."""
+    if repeat > 1:
+        return repeat
+    t = prompt.lower()
+    m = _TIMES.search(t)
+    if m:
+        w = m.group(1) or m.group(2)
+        return {"twice": 2, "thrice": 3}.get(w) or (int(w) if w.isdigit() else _NUMBERS[w])
+    if _ONCE.search(t) or _ONE.search(t):
+        return 1
+    return None
+
+
+def postures_of(prompt: str) -> tuple[str | None, str | None, bool]:
+    """(start, end, rises): the posture a prompt starts from ("from lying on the floor"), the
+    one it ends in ("sits down", "lies down", "kneels"; "standing" for a get-up) and whether it
+    gets up."""
+    t = prompt.lower()
+    start = None
+    m = _FROM.search(t)
+    if m:
+        w = m.group(1)
+        start = ("sitting" if w.startswith(("sitting", "seated")) else
+                 "kneeling" if w.startswith("kneeling") else "lying")
+    rises = bool(_RISE.search(t))
+    end = None
+    if re.search(r"\bsits?\s+up\b|\bsitting\s+up\b", t):
+        start, end = start or "lying", "sitting"
+    elif rises:
+        end = "standing"
+    else:
+        end = next((p for rx, p in _ENDS if re.search(rx, t)), None)
+    if start is not None and end is None:
+        end = "standing"
+    return start, end, rises
+
+
+def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
+    """What a segment asks for (see the module doc); `travel` is the plan's own direction of
+    travel when it has one ("forward" counts as none)."""
+    go = travel if travel in TRAVELS else None if travel is not None else travel_of(prompt)
+    start, end, rises = postures_of(prompt)
+    action = action_of(prompt)
+    count = count_of(prompt, repeat) if action else None
+    if action == "step" and count is None:
+        action = None                      # "steps sideways": travel, not a count of steps
+    return Intent(travel=go, side=side_of(prompt), action=action, count=count,
+                  start=start, end=end, rises=rises)

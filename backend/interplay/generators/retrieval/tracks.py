@@ -1,0 +1,67 @@
+"""One person's track for a segment, drawn for what the segment asks (`intent.py`): a plain
+text match when it asks nothing more, else the constrained candidates and draws of
+`constrained.py`, checked (`verify.py`) before they are kept. In order, the first that the
+captures can give:
+
+1. a change of posture (starting lying or sitting, ending seated, lying, kneeling or back up):
+   one piece from the starting posture to the end posture, its last pose then held;
+2. a counted action (jump three times, kick twice with the right leg): exactly that many;
+3. a direction of travel (backwards, sideways): views that travel that way;
+4. a named side (a right kick, the left hand): views of that side.
+
+A track may last fewer frames than its segment: the generator then holds its last pose (a
+posture reached and kept, the quiet after a counted action) to the segment's end.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from interplay.generators.retrieval import constrained as con
+from interplay.generators.retrieval import counts, postures, verify
+from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.retrieval.intent import LOW, Intent
+
+
+def start_end(index: RetrievalIndex, intent: Intent, after: dict | None
+             ) -> tuple[str | None, str | None]:
+    """(start, end) postures the segment must start and end in; None where it need not."""
+    start, end = intent.start, intent.end
+    before = postures.posture_at(index, after)
+    if start is None and (intent.rises or end in LOW or end == "standing"):
+        start = before if after else "standing"
+    if start == end:
+        return None, None
+    return start, end
+
+
+def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.Generator,
+                 after: dict | None, intent: Intent) -> list[dict]:
+    """The pieces of one person's track for a segment (see the module doc)."""
+    plain = lambda: index.track(text, frames, rng, after=after)  # noqa: E731
+    if intent.plain:
+        return plain()
+    start, end = start_end(index, intent, after)
+    draw: Callable[[], list[dict] | None] | None = None
+    specs = verify.checks(intent, start, end, first=after is None)
+    if end is not None and start is not None and (start in LOW or end in LOW):
+        options = postures.posture_options(index, text, start, end, frames, after)
+        if options:
+            draw = lambda: postures.posture_draw(index, options, frames, rng, after)  # noqa: E731
+    if draw is None and intent.action is not None and intent.count is not None:
+        reps = counts.count_options(index, text, intent, frames)
+        count = intent.count
+        if reps:
+            draw = lambda: counts.count_draw(index, reps, frames, count, rng, after)  # noqa: E731
+    if draw is None and (intent.travel is not None or intent.side is not None):
+        cands = (con.travel_candidates(index, text, intent.travel, frames) if intent.travel is not None
+                 else con.side_candidates(index, text, intent))
+        wide = con.TRAVEL_MARGIN if intent.travel is not None else None
+        short = index.narrow(cands, rng, wide) if cands else []
+        if short:
+            draw = lambda: index.chain(short, frames, rng, [0], after)  # noqa: E731
+    if draw is None:
+        return plain()
+    return verify.pick(index, draw, frames, specs) or plain()
