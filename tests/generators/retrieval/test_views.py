@@ -11,6 +11,7 @@ from interplay.generators.retrieval.views import View, mirror_text
 from interplay.generators.router import load_generator
 from interplay.motion.checks.named import run_check
 from interplay.planner.plan import plan as make_plan
+from interplay.trajectory.apply import skating
 
 KICK = "hdm05:HDM_bd_kickLFront1Reps_001_120"      # a captured left front kick
 WALK = "8action:train/walking_1"                   # a captured forward walk
@@ -44,9 +45,11 @@ def test_a_mirrored_left_kick_is_a_right_kick_and_says_so(gen):
 
 
 def test_a_reversed_walk_walks_backwards_facing_forward(gen):
-    back = gen.index.clip(f"{WALK}#reversed").people[0]
+    walk, back = gen.index.clip(WALK).people[0], gen.index.clip(f"{WALK}#reversed").people[0]
     assert run_check([back], {"check": "travel_direction", "direction": "backward", "min_m": 2.0}).passed
     assert not run_check([back], {"check": "travel_direction", "direction": "forward"}).passed
+    # The feet stay planted as in the capture: the same planted frames, the same (tiny) skating.
+    assert skating(back) == pytest.approx(skating(walk), rel=1e-6, abs=1e-9) and skating(walk) < 0.1
 
 
 def test_a_plan_naming_views_streams_the_same_after_json(gen):
