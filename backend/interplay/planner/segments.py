@@ -89,9 +89,13 @@ def timed(prompt: str, persons: int, seconds: float | None, steps: list[Step], r
     total = max(1, round((seconds if seconds is not None else min(wanted, MAX_SECONDS)) * FPS))
     steps, needs = _fold(steps, needs, total, reasons)
     frames = fit(needs, total)
-    if seconds is not None:
-        reasons.append(f"durations: estimated {wanted:.1f} s (at least "
-                       f"{sum(n.least for n in needs):.1f} s), fitted to {total / FPS:g} s")
+    if seconds is not None:       # (the wording of the proportional planner, kept for stored plans)
+        reasons.append(f"durations: estimated {wanted:.1f} s, scaled to {total / FPS:g} s")
+        if len(needs) > 1 and sum(n.least for n in needs) <= total / FPS < wanted:
+            reasons.append(f"durations: each step at least what it needs "
+                           f"({', '.join(f'{n.least:g}' for n in needs)} s)")
+        elif len(needs) > 1 and total / FPS > wanted and any(n.elastic for n in needs):
+            reasons.append("durations: the spare time to the steps that can last longer")
     segments: list[dict[str, Any]] = []
     start = 0
     for i, (s, n) in enumerate(zip(steps, frames)):
