@@ -11,6 +11,7 @@ import { PromptBar } from "./ui/PromptBar";
 import { ShareExport } from "./ui/ShareExport";
 import { Timeline } from "./ui/Timeline";
 import { Tools } from "./ui/Tools";
+import { ViewButtons } from "./ui/ViewButtons";
 import { PathPanel } from "./ui/PathPanel";
 import { PartEditor } from "./ui/PartEditor";
 import { Versions } from "./ui/Versions";
@@ -48,6 +49,7 @@ export function App() {
         <div className="stage">
           <Viewport />
           <Tools />
+          <ViewButtons />
           <EmptyState />
           <Progress />
           <PartEditor />

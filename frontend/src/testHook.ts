@@ -2,6 +2,8 @@
 import { FPS, frames, renderStats, sceneProbe, useStudio } from "./store";
 import { useLibrary } from "./library";
 import { figureStats, useFigure } from "./figure";
+import { viewStats } from "./scene/views";
+import { MARK_STRIDE } from "./scene/overlaps";
 
 export interface BvhSummary {
   bones: number;
@@ -42,6 +44,12 @@ export interface InterplayTestHook {
   /** The figure chosen (mannequin / character), its status, what is drawn and how many
    * characters are made. */
   readonly figure: { figure: string; status: string; shown: string; characters: number };
+  /** The camera: the preset view last applied (null before any), whether the user has moved
+   * it since, its position and orbit target (world metres). */
+  readonly view: { preset: string | null; moved: boolean; position: number[]; target: number[] };
+  /** The penetration marks drawn at the pose shown: [x, y, z, radius, depth] (m) each, where
+   * the two people's sphere bodies overlap (none for one person). */
+  readonly penetrationMarks: number[][];
   /** Screen position (client px) of joint j of person p at the frame shown, or null. */
   project(person: number, joint: number): [number, number] | null;
   /** Screen position (client px) of a world point, or null before the viewport exists. */
@@ -139,6 +147,13 @@ export function installTestHook(target: Window = window): void {
     get figure() {
       const { figure, status } = useFigure.getState();
       return { figure, status, shown: figureStats.shown, characters: figureStats.characters };
+    },
+    get view() {
+      return { preset: viewStats.view, moved: viewStats.moved, position: [...viewStats.position], target: [...viewStats.target] };
+    },
+    get penetrationMarks() {
+      const d = viewStats.marks;
+      return d ? Array.from({ length: viewStats.markCount }, (_, k) => Array.from(d.subarray(k * MARK_STRIDE, (k + 1) * MARK_STRIDE))) : [];
     },
     project(person, joint) {
       const t = useStudio.getState().frame;

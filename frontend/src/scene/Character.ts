@@ -7,8 +7,8 @@
 // ~850 vertices here at each pose and draws a plain mesh (software WebGL pays more for the
 // shader's bone texture reads; docs/studio.md). Part colours and highlights are vertex
 // colours, as the mannequin's: a vertex takes the colour of the bone it lies on; contact joints
-// glow green, bones of penetrating parts turn red along their middle, the selected / hovered
-// part is painted on top.
+// glow green, the selected / hovered part is painted on top (penetration is marked where the
+// bodies overlap by the stage, PenetrationMarks.ts, not painted on the skin).
 import * as THREE from "three";
 import { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";
 import * as SkeletonUtils from "three/examples/jsm/utils/SkeletonUtils.js";
@@ -17,7 +17,7 @@ import { NUM_JOINTS } from "../playback/frameBuffer";
 import { fitPositions, restJoints, sampleRig, vertexJoints, type RigPerson } from "../playback/rig";
 import { standardGlowMaterial, vertexLitMaterial } from "./bodyMaterial";
 import { lodGeometry } from "./lightBody";
-import { CONTACT_COLOUR, PENETRATION_COLOUR, jointColours } from "./colours";
+import { CONTACT_COLOUR, jointColours } from "./colours";
 import { HOVER_COLOUR, SELECT_COLOUR } from "./Mannequin";
 import { QUALITY, type QualitySettings } from "./quality";
 
@@ -27,16 +27,10 @@ export const BODY_NODE = "humanoid_body";
 
 /** Highlight states of a vertex, in order of precedence (0: its part colour). */
 const CONTACT = 1;
-const PENETRATION = 2;
-const SELECTED = 3;
-const HOVERED = 4;
-const GLOW = [0, 0.7, 0.45, 0.45, 0.45];
-/** Whole parts penetrate, and a body painted plain red would hide which parts they are. As the
- * mannequin paints its bones red and keeps its joint spheres' part colours, the character paints
- * the skin along the middle of a penetrating bone (between these fractions of its length, in
- * the bind pose) and keeps the skin around the joints and of the leaves (head, hands, feet). */
-const BONE_SKIN: [number, number] = [0.3, 0.7];
-const PAINT = [null, CONTACT_COLOUR, PENETRATION_COLOUR, SELECT_COLOUR, HOVER_COLOUR].map((c) => (c ? new THREE.Color(c) : null));
+const SELECTED = 2;
+const HOVERED = 3;
+const GLOW = [0, 0.7, 0.45, 0.45];
+const PAINT = [null, CONTACT_COLOUR, SELECT_COLOUR, HOVER_COLOUR].map((c) => (c ? new THREE.Color(c) : null));
 const SCRATCH = new THREE.Color();
 
 /** The loaded template: humanoid.glb's scene (bones named as the skeleton, one skinned body). */
@@ -80,27 +74,6 @@ export async function loadHumanoid(light = false, url = HUMANOID_URL): Promise<H
   return light ? lightTemplate(full) : full;
 }
 
-/** Per vertex (bind pose): 1 when it lies along the middle of its bone, from its strongest
- * joint to the bone's child joint (a leaf's own skin has no bone: 0). */
-function boneMiddles(positions: Float32Array, joint: Uint8Array, bone: Uint8Array, rest: Float32Array): Uint8Array {
-  const out = new Uint8Array(joint.length);
-  for (let v = 0; v < joint.length; v++) {
-    const a = 3 * joint[v];
-    const b = 3 * bone[v];
-    if (a === b) continue;
-    let dot = 0;
-    let len = 0;
-    for (let k = 0; k < 3; k++) {
-      const d = rest[b + k] - rest[a + k];
-      dot += (positions[3 * v + k] - rest[a + k]) * d;
-      len += d * d;
-    }
-    const t = dot / Math.max(len, 1e-12);
-    out[v] = t >= BONE_SKIN[0] && t <= BONE_SKIN[1] ? 1 : 0;
-  }
-  return out;
-}
-
 export class Character {
   /** The clone's root: the bone hierarchy and the body (its skinned mesh, a sibling). */
   readonly group: THREE.Object3D;
@@ -113,15 +86,11 @@ export class Character {
   /** Per vertex: the strongest joint (contacts) and the bone, by its child joint (the rest). */
   private readonly vertexJoint: Uint8Array;
   private readonly vertexBone: Uint8Array;
-  /** Per vertex: 1 where the skin lies along the middle of its bone (see BONE_SKIN). */
-  private readonly boneSkin: Uint8Array;
   private readonly base: Float32Array;
   private readonly colour: THREE.BufferAttribute;
   private readonly glow: THREE.BufferAttribute;
-  /** Per joint: contact (by the strongest joint), whether the bone ending there penetrates,
-   * and its selected / hovered paint. */
+  /** Per joint: contact (by the strongest joint), and its selected / hovered paint. */
   private readonly jointState = new Uint8Array(NUM_JOINTS);
-  private readonly penState = new Uint8Array(NUM_JOINTS);
   private readonly pickState = new Uint8Array(NUM_JOINTS);
   private painted = false;
   /** The skinned bounds (what a ray tests first) are older than the pose. */
@@ -176,7 +145,6 @@ export class Character {
     const { joint, bone } = vertexJoints(skinIndex, skinWeight, skeleton.parents);
     this.vertexJoint = joint;
     this.vertexBone = bone;
-    this.boneSkin = boneMiddles(fitted, joint, bone, rest);
     const colours = jointColours(skeleton, person).map((c) => new THREE.Color(c));
     const n = joint.length;
     this.base = new Float32Array(3 * n);
@@ -258,26 +226,24 @@ export class Character {
 
   /** Pose at frame t of the rig, blended by `weight` towards frame `next`; paints the
    * highlights of frame t. No allocation. */
-  setPose(rig: RigPerson, t: number, next: number, weight: number, contacts: Set<number>, penetrating: Set<number>): void {
+  setPose(rig: RigPerson, t: number, next: number, weight: number, contacts: Set<number>): void {
     sampleRig(rig, t, next, weight, this.q, this.root);
     const { bones, q, root } = this;
     for (let j = 0; j < NUM_JOINTS; j++) bones[j].quaternion.fromArray(q, 4 * j);
     bones[0].position.fromArray(root);
     this.boundsStale = true;
     if (this.cpu) this.skinOnCpu();
-    this.paint(contacts, penetrating);
+    this.paint(contacts);
   }
 
   /** Write the vertex colours when a joint's highlight changed. */
-  private paint(contacts: Set<number>, penetrating: Set<number>): void {
+  private paint(contacts: Set<number>): void {
     let changed = !this.painted;
     for (let j = 0; j < NUM_JOINTS; j++) {
       const js = contacts.has(j) ? CONTACT : 0;
-      const ps = penetrating.has(j) ? PENETRATION : 0;
       const ks = this.selected.has(j) ? SELECTED : this.hovered.has(j) ? HOVERED : 0;
-      if (js !== this.jointState[j] || ps !== this.penState[j] || ks !== this.pickState[j]) changed = true;
+      if (js !== this.jointState[j] || ks !== this.pickState[j]) changed = true;
       this.jointState[j] = js;
-      this.penState[j] = ps;
       this.pickState[j] = ks;
     }
     if (!changed) return;
@@ -287,7 +253,7 @@ export class Character {
     for (let v = 0; v < this.vertexJoint.length; v++) {
       const vj = this.vertexJoint[v];
       const vb = this.vertexBone[v];
-      const state = this.jointState[vj] || (this.boneSkin[v] && this.penState[vb]) || this.pickState[vb];
+      const state = this.jointState[vj] || this.pickState[vb];
       const c = PAINT[state];
       if (c) c.toArray(colours, 3 * v);
       else {

@@ -22,7 +22,7 @@ function pickAt(m: Mannequin, x: number, y: number): number | null {
 describe("Mannequin (one merged mesh)", () => {
   it("draws a person as one mesh and picks the joint under a ray", () => {
     const m = new Mannequin(skeleton, 0, QUALITY.full);
-    m.setPose(rest, new Set(), new Set());
+    m.setPose(rest, new Set());
     expect(m.pickable).toHaveLength(1);
     const [x, y] = [rest[3 * LEFT_ELBOW], rest[3 * LEFT_ELBOW + 1]];
     expect(pickAt(m, x, y)).toBe(LEFT_ELBOW);
@@ -31,7 +31,7 @@ describe("Mannequin (one merged mesh)", () => {
     expect(pickAt(m, mid[0], mid[1])).toBe(LEFT_WRIST);
     // after a new pose the bounds follow: the same joint 3 m to the side is picked there
     const moved = rest.map((v, i) => (i % 3 === 0 ? v + 3 : v));
-    m.setPose(moved, new Set(), new Set());
+    m.setPose(moved, new Set());
     expect(pickAt(m, x + 3, y)).toBe(LEFT_ELBOW);
     expect(pickAt(m, x, y)).toBeNull();
     m.dispose();
@@ -40,7 +40,7 @@ describe("Mannequin (one merged mesh)", () => {
   it("light quality: under 1,000 shared vertices per person, still picking joint and bone", () => {
     // (shadowMap on: no blob shadows, which need a canvas; the tessellation is light quality's)
     const m = new Mannequin(skeleton, 0, { ...QUALITY.light, shadowMap: true });
-    m.setPose(rest, new Set(), new Set());
+    m.setPose(rest, new Set());
     const geometry = (m.pickable[0] as THREE.Mesh).geometry;
     expect(geometry.getAttribute("position").count).toBeLessThan(1000);
     const [x, y] = [rest[3 * LEFT_ELBOW], rest[3 * LEFT_ELBOW + 1]];
@@ -53,16 +53,16 @@ describe("Mannequin (one merged mesh)", () => {
     m.dispose();
   });
 
-  it("paints hovered joints, contact joints and penetrating bones per instance", () => {
+  it("paints hovered joints and contact joints per instance", () => {
     const m = new Mannequin(skeleton, 1, QUALITY.full);
     m.hovered = new Set([LEFT_ELBOW]);
-    m.setPose(rest, new Set([LEFT_WRIST]), new Set());
+    m.setPose(rest, new Set([LEFT_WRIST]));
     expect(m.jointPaint(LEFT_ELBOW).colour).toBe(HOVER_COLOUR);
     expect(m.jointPaint(LEFT_WRIST)).toEqual({ colour: "#39ff88", glow: expect.any(Number) });
     expect(m.jointPaint(LEFT_WRIST).glow).toBeGreaterThan(0);
     expect(m.jointPaint(0).glow).toBe(0);
     m.hovered = new Set();
-    m.setPose(rest, new Set(), new Set());
+    m.setPose(rest, new Set());
     expect(m.jointPaint(LEFT_ELBOW).colour).not.toBe(HOVER_COLOUR);
     expect(m.jointPaint(LEFT_WRIST).glow).toBe(0);
     m.dispose();

@@ -1,11 +1,12 @@
 // A person drawn as a cylinder per bone and a sphere per joint (the joint spheres, at least as
 // wide as the bones meeting there, close the cylinders' ends: together they are capsules),
 // coloured by body part, merged into one mesh per person (bodyMesh.ts): one draw call whatever
-// the skeleton. Per frame: contact joints glow green, bones of penetrating parts turn red; the
-// selected / hovered part is painted on top.
+// the skeleton. Per frame: contact joints glow green; the selected / hovered part is painted on
+// top. Penetration is not painted on the body (it hid where the bodies meet): the stage marks
+// the overlaps themselves (PenetrationMarks.ts).
 import * as THREE from "three";
 import type { Skeleton } from "../api/types";
-import { CONTACT_COLOUR, PENETRATION_COLOUR, bones, jointColours } from "./colours";
+import { CONTACT_COLOUR, bones, jointColours } from "./colours";
 import { blobMap } from "./blobShadow";
 import { QUALITY, type QualitySettings } from "./quality";
 import { BodyMesh, weldedShape } from "./bodyMesh";
@@ -131,12 +132,12 @@ export class Mannequin {
   }
 
   /** Pose the mannequin: `joints` is one frame (66 floats); sets highlight colours. No allocation. */
-  setPose(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
-    if (this.bodyVisible) this.placeBody(joints, contacts, penetrating);
+  setPose(joints: Float32Array, contacts: Set<number>): void {
+    if (this.bodyVisible) this.placeBody(joints, contacts);
     this.placeBlobs(joints);
   }
 
-  private placeBody(joints: Float32Array, contacts: Set<number>, penetrating: Set<number>): void {
+  private placeBody(joints: Float32Array, contacts: Set<number>): void {
     const { a, b, q, s, body } = this;
     for (let i = 0; i < this.bonePairs.length; i++) {
       const [child, parent] = this.bonePairs[i];
@@ -149,7 +150,7 @@ export class Mannequin {
       const r = this.boneRadii[i];
       s.set(r, Math.max(len, 1e-4), r);
       body.place(i, a, q, s);
-      body.paint(i, penetrating.has(child) ? PENETRATION_COLOUR : this.pickColour(child), 0.45);
+      body.paint(i, this.pickColour(child), 0.45);
     }
     q.identity();
     for (let j = 0; j < this.jointRadii.length; j++) {

@@ -1,26 +1,29 @@
-// The three.js stage: renderer, soft lights with shadows, ground grid, orbit camera and the
-// people of the current motion — mannequins, or the skinned characters (Character.ts) once the
-// motion's rig is there. Renders on demand (when something changed).
+// The three.js stage: renderer, soft lights with shadows, ground grid, the camera (CameraRig:
+// orbit controls, preset views, following the people) and the people of the current motion —
+// mannequins, or the skinned characters (Character.ts) once the motion's rig is there — with
+// the marks where two people's bodies overlap (PenetrationMarks). Renders on demand (when
+// something changed).
 import * as THREE from "three";
-import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import type { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { Skeleton } from "../api/types";
 import type { FrameBuffer } from "../playback/frameBuffer";
 import type { MotionRig } from "../playback/rig";
 import type { CharacterMaker } from "../figure";
 import type { Character } from "./Character";
-import { contactJoints, penetratingBones } from "./colours";
+import { CameraRig } from "./CameraRig";
+import { contactJoints } from "./colours";
+import type { ViewPreset } from "./framing";
 import { Ground } from "./Ground";
 import { FLOOR_COLOUR, LineGround } from "./LineGround";
 import { Mannequin } from "./Mannequin";
 import { PathOverlay } from "./PathOverlay";
+import { PenetrationMarks } from "./PenetrationMarks";
 import { QUALITY, type Quality, type QualitySettings } from "./quality";
 import { debugFlags } from "./debugFlags";
 import { setBodyAmbient } from "./bodyMaterial";
 import { PALETTES, type StageTheme } from "./palette";
 
 const BACKGROUND = PALETTES.dark.background;
-/** Metres above the people the top view looks down from (about 9 m of floor across at 40°). */
-const TOP_VIEW_HEIGHT = 12;
 
 /** The quality's body tessellation replaced by `?tess=` (debugFlags.ts), for profiling. */
 function withTessellation(q: QualitySettings, tess: "old" | number[] | null): QualitySettings {
@@ -33,15 +36,9 @@ function withTessellation(q: QualitySettings, tess: "old" | number[] | null): Qu
 export class Stage {
   readonly renderer: THREE.WebGLRenderer;
   readonly scene = new THREE.Scene();
-  readonly camera = new THREE.PerspectiveCamera(40, 1, 0.05, 200);
-  readonly controls: OrbitControls;
+  readonly rig: CameraRig;
   private readonly sun = new THREE.DirectionalLight("#ffffff", 2.2);
   private readonly hemi = new THREE.HemisphereLight("#dbe6ff", "#2b2f38", 1.4);
-  /** The camera's offset from its target before the top view, to go back to. */
-  private orbitOffset: THREE.Vector3 | null = null;
-  /** While true the camera does not follow the people (drawing a path: the floor must not
-   * slide under the pointer as they walk, or loop back). */
-  followPaused = false;
   private readonly ground: Ground | LineGround;
   private readonly settings: QualitySettings;
   private mannequins: Mannequin[] = [];
@@ -53,11 +50,12 @@ export class Stage {
   shown: "mannequin" | "character" = "mannequin";
   /** Per person: the joints of a pose blended between two frames (reused, no allocation). */
   private readonly blended: Float32Array[] = [];
-  private highlights: { frame: number; version: number; buffer: FrameBuffer | null; sets: [Set<number>, Set<number>][] } =
+  private highlights: { frame: number; version: number; buffer: FrameBuffer | null; sets: Set<number>[] } =
     { frame: -1, version: -1, buffer: null, sets: [] };
-  private readonly centre = new THREE.Vector3();
-  private readonly centreNext = new THREE.Vector3();
-  private readonly delta = new THREE.Vector3();
+  /** The poses drawn, per person (the buffer's frame or the blend), for the penetration marks. */
+  private readonly drawn: Float32Array[] = [];
+  readonly penetration = new PenetrationMarks();
+  private skeleton: Skeleton | null = null;
   private dirty = true;
   private readonly debug = debugFlags();
   readonly path = new PathOverlay();
@@ -100,19 +98,24 @@ export class Stage {
     fill.position.set(-4, 3, -3);
     this.scene.add(fill);
 
-    this.scene.add(this.ground.group, this.path.group);
+    this.scene.add(this.ground.group, this.path.group, this.penetration.group);
     this.ground.group.visible = !this.debug.hide.has("ground");
     this.path.group.visible = !this.debug.hide.has("path");
 
-    this.camera.position.set(2.4, 1.8, 5.2);
-    this.controls = new OrbitControls(this.camera, canvas);
-    this.controls.target.set(0, 0.9, 0);
-    this.controls.enableDamping = false;
-    this.controls.maxPolarAngle = Math.PI * 0.495;
-    this.controls.minDistance = 0.8;
-    this.controls.maxDistance = 30;
-    this.controls.addEventListener("change", () => (this.dirty = true));
-    this.controls.update();
+    this.rig = new CameraRig(canvas, () => (this.dirty = true));
+  }
+
+  get camera(): THREE.PerspectiveCamera {
+    return this.rig.camera;
+  }
+
+  get controls(): OrbitControls {
+    return this.rig.controls;
+  }
+
+  /** While true the camera does not follow the people (the path tool). */
+  set followPaused(on: boolean) {
+    this.rig.followPaused = on;
   }
 
   /** Colours for the UI theme: background, floor grid and the floor's light bounce. */
@@ -128,24 +131,12 @@ export class Stage {
 
   /** Look straight down on the people (for drawing a path), or back to the orbit view as it was. */
   setTopView(on: boolean): void {
-    if (on === (this.orbitOffset !== null)) return;
-    const target = this.controls.target;
-    if (on) {
-      this.orbitOffset = this.camera.position.clone().sub(target);
-      // a hair off vertical, from +Z: the floor is seen as from the front view, +Z down the screen
-      this.camera.position.set(target.x, target.y + TOP_VIEW_HEIGHT, target.z + 0.001);
-      this.controls.enableRotate = false;
-    } else {
-      this.camera.position.copy(target).add(this.orbitOffset!);
-      this.orbitOffset = null;
-      this.controls.enableRotate = true;
-    }
-    this.controls.update();
+    this.rig.setTopView(on);
     this.dirty = true;
   }
 
   get topView(): boolean {
-    return this.orbitOffset !== null;
+    return this.rig.topView;
   }
 
   /** The pixel ratio drawn at (dynamic resolution changes it while playing). */
@@ -179,7 +170,8 @@ export class Stage {
       this.mannequins.push(m);
       this.scene.add(m.group);
     }
-    this.frameView(buffer);
+    this.skeleton = skeleton;
+    this.applyView("default", buffer, 0);
   }
 
   clearPeople(): void {
@@ -187,6 +179,7 @@ export class Stage {
     if (!this.mannequins.length) return;
     this.mannequins.forEach((m) => m.dispose());
     this.mannequins = [];
+    this.penetration.clear();
     this.dirty = true;
   }
 
@@ -255,57 +248,12 @@ export class Stage {
     this.dirty = true;
   }
 
-  /** Where the people are at frame t: the mean pelvis position on the floor. */
-  private centreAt(buffer: FrameBuffer, t: number, out: THREE.Vector3): THREE.Vector3 {
-    out.set(0, 0, 0);
-    for (let p = 0; p < buffer.persons; p++) {
-      const f = buffer.frame(p, t);
-      out.x += f[0] / buffer.persons;
-      out.z += f[2] / buffer.persons;
-    }
-    return out;
-  }
-
-  /** Aim the camera at the people from the front-right, far enough to see them all (their widest
-   * spread over the received frames). */
-  frameView(buffer: FrameBuffer): void {
-    if (buffer.received === 0) return;
-    let spread = 0;
-    if (buffer.persons === 2) {
-      for (let t = 0; t < buffer.received; t++) {
-        const a = buffer.frame(0, t);
-        const b = buffer.frame(1, t);
-        spread = Math.max(spread, Math.hypot(a[0] - b[0], a[2] - b[2]));
-      }
-    }
-    const span = Math.max(2.2, spread + 1.6);
-    const distance = span / (2 * Math.tan(THREE.MathUtils.degToRad(this.camera.fov / 2))) + 1.2;
-    const centre = this.centreAt(buffer, 0, new THREE.Vector3());
-    this.controls.target.set(centre.x, 0.9, centre.z);
-    const dir = new THREE.Vector3(0.42, 0.3, 1).normalize();
-    this.camera.position.copy(this.controls.target).addScaledVector(dir, distance);
-    if (this.orbitOffset) {
-      // in the top view: keep looking down, and go back to this orbit view when it ends
-      this.orbitOffset.copy(this.camera.position).sub(this.controls.target);
-      this.camera.position.set(centre.x, this.controls.target.y + TOP_VIEW_HEIGHT, centre.z + 0.001);
-    }
-    this.moveLights(centre);
-    this.controls.update();
+  /** Move the camera to a preset view of the people at frame t (CameraRig.applyView). */
+  applyView(preset: ViewPreset, buffer: FrameBuffer, t: number): void {
+    if (!this.skeleton || buffer.received === 0 || !this.mannequins.length) return;
+    this.rig.applyView(preset, this.skeleton, buffer, t);
+    this.moveLights(this.rig.centreAt(buffer, Math.min(t, buffer.received - 1), new THREE.Vector3()));
     this.dirty = true;
-  }
-
-  /** Keep the people in view: move the camera (and what depends on it) with their centre,
-   * keeping the user's orbit. */
-  private follow(buffer: FrameBuffer, t: number, next: number, weight: number): void {
-    if (this.followPaused) return;
-    const centre = this.centreAt(buffer, t, this.centre);
-    if (weight > 0) centre.lerp(this.centreAt(buffer, next, this.centreNext), weight);
-    const delta = this.delta.set(centre.x - this.controls.target.x, 0, centre.z - this.controls.target.z);
-    if (delta.lengthSq() < 1e-10) return;
-    this.controls.target.add(delta);
-    this.camera.position.add(delta);
-    this.moveLights(centre);
-    this.controls.update();
   }
 
   private moveLights(centre: THREE.Vector3): void {
@@ -328,28 +276,30 @@ export class Stage {
         for (let i = 0; i < joints.length; i++) out[i] = joints[i] + (b[i] - joints[i]) * weight;
         joints = out;
       }
-      const [contacts, penetrating] = this.highlightsAt(skeleton, buffer, t, p);
+      const contacts = this.contactsAt(buffer, t, p);
       // a character stands in: the mannequin only places its blob shadows
       m.bodyVisible = !rig;
-      m.setPose(joints, contacts, penetrating);
-      if (rig) this.characters[p].setPose(rig.people[p], t, next, weight, contacts, penetrating);
+      m.setPose(joints, contacts);
+      if (rig) this.characters[p].setPose(rig.people[p], t, next, weight, contacts);
+      this.drawn[p] = joints;
     });
+    this.drawn.length = this.mannequins.length;
+    // penetration where it happens: the overlaps of the poses drawn (the bodies keep their colours)
+    this.penetration.update(skeleton, buffer, this.drawn);
     this.characters.forEach((c) => (c.group.visible = rig !== null && !this.debug.hide.has("people")));
-    this.follow(buffer, t, next, weight);
+    const centre = this.rig.follow(buffer, t, next, weight);
+    if (centre) this.moveLights(centre);
     this.dirty = true;
   }
 
-  /** Person p's contact joints and penetrating bones at frame t, made once per frame (and
-   * buffer version), not at every refresh that blends towards the next frame. */
-  private highlightsAt(skeleton: Skeleton, buffer: FrameBuffer, t: number, p: number): [Set<number>, Set<number>] {
+  /** Person p's contact joints at frame t, made once per frame (and buffer version), not at
+   * every refresh that blends towards the next frame. */
+  private contactsAt(buffer: FrameBuffer, t: number, p: number): Set<number> {
     const h = this.highlights;
     if (h.frame !== t || h.version !== buffer.version || h.buffer !== buffer) {
       this.highlights = { frame: t, version: buffer.version, buffer, sets: [] };
     }
-    return (this.highlights.sets[p] ??= [
-      contactJoints(buffer.contacts[t], p),
-      penetratingBones(skeleton, buffer.penetration[t], p),
-    ]);
+    return (this.highlights.sets[p] ??= contactJoints(buffer.contacts[t], p));
   }
 
   /** Render if anything changed; true when a frame was drawn. */
@@ -363,8 +313,9 @@ export class Stage {
   dispose(): void {
     this.clearPeople();
     this.path.dispose();
+    this.penetration.dispose();
     this.ground.dispose();
-    this.controls.dispose();
+    this.rig.dispose();
     this.renderer.dispose();
   }
 }

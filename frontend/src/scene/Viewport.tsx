@@ -1,7 +1,8 @@
 // Hosts the three.js Stage and runs the render loop: advances the playback clock, poses the
 // mannequins from the FrameBuffer (while playing, blended between the 20 fps frames, so each
 // display refresh gets a new pose) and renders when something changed. No per-frame React state
-// except the integer frame number the timeline shows.
+// except the integer frame number the timeline shows. Takes the preset views the UI asks for
+// (views.ts) and reports the camera and the penetration marks back there.
 import { useEffect, useRef } from "react";
 import { advance, blendAt } from "../playback/timeline";
 import { FPS, frames, playhead, renderStats, useStudio } from "../store";
@@ -15,6 +16,7 @@ import { debugFlags } from "./debugFlags";
 import { LIGHT_RESOLUTION, ResolutionController } from "./resolution";
 import { Stage } from "./Stage";
 import { figureData, figureStats, useFigure, watchFigure } from "../figure";
+import { viewRequest, viewStats } from "./views";
 
 export function Viewport() {
   const canvasRef = useRef<HTMLCanvasElement>(null);
@@ -32,8 +34,10 @@ export function Viewport() {
     if (dynres) stage.renderScale = dynres.scale;
     renderStats.scale = stage.renderScale;
     let drewLast = false;
+    let resized = false; // since the view was last fitted
     const fit = () => {
       stage.resize(canvas.clientWidth, canvas.clientHeight);
+      resized = true;
       const scale = dynres?.fit(canvas.clientWidth * canvas.clientHeight);
       if (scale) renderStats.scale = stage.renderScale = scale;
     };
@@ -52,6 +56,7 @@ export function Viewport() {
     let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1 };
     let look = { theme: "", top: false };
     let generation = -1; // which FrameBuffer contents the mannequins were built for
+    let framed = -1; // the buffer's version the view was last fitted to
     let drawn = { pos: -1, version: -1 };
     let last = performance.now();
     let raf = 0;
@@ -69,6 +74,23 @@ export function Viewport() {
         if (skeleton && frames.received > 0) {
           stage.setPeople(skeleton, frames);
           generation = frames.generation;
+          framed = frames.version;
+          resized = false;
+          drawn = { pos: -1, version: -1 };
+        }
+      }
+      if (stage.people > 0) {
+        // a preset asked for; or, while the user has not moved the camera, the same view fitted
+        // again to a motion all in whose frames changed since (the first chunk of a stream
+        // opened it; a job may send its frames again, corrected, before it is done), or to a
+        // resized canvas
+        const refit = frames.received === frames.total && (framed !== frames.version || resized);
+        const preset = viewRequest.preset ?? (refit && !stage.rig.moved && s.tool !== "path" ? stage.rig.view : null);
+        viewRequest.preset = null;
+        if (preset && s.tool !== "path") {
+          stage.applyView(preset, frames, s.frame);
+          framed = frames.version;
+          resized = false;
           drawn = { pos: -1, version: -1 };
         }
       }
@@ -126,6 +148,14 @@ export function Viewport() {
         if (scale !== null) renderStats.scale = stage.renderScale = scale;
       }
       drewLast = drew;
+      if (drew) {
+        stage.camera.position.toArray(viewStats.position);
+        stage.controls.target.toArray(viewStats.target);
+      }
+      viewStats.view = stage.rig.view;
+      viewStats.moved = stage.rig.moved;
+      viewStats.markCount = stage.penetration.marks.count;
+      viewStats.marks = stage.penetration.marks.data;
       figureStats.shown = stage.shown;
       figureStats.characters = stage.characterCount;
     };

@@ -8,7 +8,6 @@ import {
   jointColours,
   mixHex,
   partColour,
-  penetratingBones,
 } from "./colours";
 
 const J = (name: string) => skeleton.joints.indexOf(name);
@@ -37,12 +36,8 @@ describe("part colours", () => {
     expect(b).toContainEqual([J("left_elbow"), J("left_shoulder")]);
   });
 
-  it("maps highlights to a person's joints and bones", () => {
+  it("maps contact highlights to a person's joints", () => {
     expect([...contactJoints([[0, 20], [1, 21], [0, 10]], 0)].sort()).toEqual([10, 20]);
-    const pen = penetratingBones(skeleton, [[1, "left_lower"], [0, "right_upper"]], 1);
-    expect([...pen].sort((a, b) => a - b)).toEqual(
-      ["left_hip", "left_knee", "left_ankle", "left_foot"].map(J).sort((a, b) => a - b),
-    );
-    expect(penetratingBones(skeleton, undefined, 0).size).toBe(0);
+    expect(contactJoints(undefined, 0).size).toBe(0);
   });
 });

@@ -5,6 +5,7 @@ import type { Skeleton } from "../api/types";
 export const PERSON_TINT = "#fff1cc";
 export const PERSON_TINT_AMOUNT = 0.45;
 export const CONTACT_COLOUR = "#39ff88";
+/** The marks where two people's bodies overlap (PenetrationMarks.ts) and on the timeline. */
 export const PENETRATION_COLOUR = "#ff3b3b";
 
 function parseHex(hex: string): [number, number, number] {
@@ -45,19 +46,4 @@ export function jointColours(skeleton: Skeleton, person: number): string[] {
 /** Joints (bone ends) of a person in contact at one frame, from highlight [person, joint] pairs. */
 export function contactJoints(contacts: [number, number][] | undefined, person: number): Set<number> {
   return new Set((contacts ?? []).filter(([p]) => p === person).map(([, j]) => j));
-}
-
-/** Child joints of the bones that penetrate the other person at one frame: a bone belongs to a
- * (CoMA, overlapping) part when its child joint does. */
-export function penetratingBones(
-  skeleton: Skeleton,
-  penetration: [number, string][] | undefined,
-  person: number,
-): Set<number> {
-  const out = new Set<number>();
-  for (const [p, part] of penetration ?? []) {
-    if (p !== person) continue;
-    for (const j of skeleton.parts[part] ?? []) if (skeleton.parents[j] >= 0) out.add(j);
-  }
-  return out;
 }

@@ -72,7 +72,7 @@ describe("the light level of detail of the character", () => {
     let worst = 0;
     for (const t of [0, 3, 7]) {
       for (const c of [a, b]) {
-        c.setPose(person, t, t, 0, new Set(), new Set());
+        c.setPose(person, t, t, 0, new Set());
         c.group.updateMatrixWorld(true);
         c.mesh.skeleton.update();
       }

@@ -8,7 +8,8 @@ const PART_LABELS: Record<string, string> = {
   right_lower: "Right lower",
 };
 
-/** Colour key: the four body parts (per person) and the contact / penetration highlights. */
+/** Colour key: the four body parts (per person), contact joints and the penetration marks
+ * (red dots with a halo where two bodies overlap). */
 export function Legend() {
   const skeleton = useStudio((s) => s.skeleton);
   const persons = useStudio((s) => s.motionPersons);
@@ -34,8 +35,8 @@ export function Legend() {
           Contact
         </span>
         <span className="legend__item">
-          <i style={{ background: PENETRATION_COLOUR }} />
-          Penetration
+          <i className="round" style={{ background: PENETRATION_COLOUR, boxShadow: `0 0 0 3px ${PENETRATION_COLOUR}55` }} />
+          Penetration (where the bodies overlap)
         </span>
       </div>
     </div>
