@@ -43,6 +43,8 @@ declare global {
       project(person: number, joint: number): [number, number] | null;
       groundAt(x: number, y: number): [number, number] | null;
       projectPoint(x: number, y: number, z: number): [number, number] | null;
+      view: { preset: string | null; moved: boolean; position: number[]; target: number[] };
+      penetrationMarks: number[][];
     };
   }
 }
