@@ -17,6 +17,7 @@ plan's script, so `stream` makes them again when they are not cached.
 
 from __future__ import annotations
 
+import re
 from collections import OrderedDict
 from collections.abc import Iterator
 
@@ -62,9 +63,23 @@ def plain(x):
     return x
 
 
+_IDLE = re.compile(r"(a person )?(stands?|waits?|remains?|stays?)( still| there| in place)?\.?", re.I)
+
+
 def _roles(plan) -> dict | None:
-    """The first segment's per-person roles, when the planner gave any."""
-    return next((dict(s.roles) for s in plan.segments if s.roles), None)
+    """Each person's role over the whole request, when the planner gave any: their roles in
+    the segments, in order, those that only stand still left out unless nothing else is
+    left ({"0": "a person pushes the other person", "1": "a person stumbles backwards"})."""
+    segs = [s.roles for s in plan.segments if s.roles]
+    if not segs:
+        return None
+    out = {}
+    for k in ("0", "1"):
+        texts = list(dict.fromkeys(str(r[k]) for r in segs if r.get(k)))
+        busy = [t for t in texts if not _IDLE.fullmatch(t.strip())]
+        if busy or texts:
+            out[k] = "; then ".join(busy or texts[:1])
+    return out or None
 
 
 def _texts(prompt: str, roles: dict | None) -> list[str]:

@@ -116,19 +116,30 @@ def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
     return kind, f"the text encoder: nearest description '{text}' ({sim:.2f})"
 
 
-def _actor(kind: str, roles: dict | None) -> tuple[int, str]:
+_VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_stops": "stops",
+         "mirror": "leads (the other mirrors)"}
+# Prompts whose first-named person is the one who responds ("one person follows the other").
+_SUBJECT = r"^\W*(one|a|the first)( person| of them)?\s+"
+_FIRST_RESPONDS = {"follow": _SUBJECT + r"(follows?|chases?|trails?)\b",
+                   "mirror": _SUBJECT + r"(cop(y|ies)|mirrors?|imitates?|mimics?)\b"}
+
+
+def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
     """Who starts: by the planner's roles when they tell the two apart (a role's words for
-    starting count for it, its words for responding against it), else person 0 (the 'one' a
-    prompt names first)."""
+    starting count for it, its words for responding against it), else by the prompt (the
+    'one' it names first starts, unless what that one does is the response)."""
+    verb = _VERB.get(kind, "starts")
     if roles and kind in _RESPONDER:
         texts = [str(roles.get("0", "")), str(roles.get("1", ""))]
         responds = [bool(re.search(_RESPONDER[kind], t, re.I)) for t in texts]
         starts = [bool(re.search(_ACTOR[kind], t, re.I)) if kind in _ACTOR else False for t in texts]
         score = [int(s) - int(r) for s, r in zip(starts, responds)]
-        who = -1 if score[0] == score[1] else int(np.argmax(score))
-        if who >= 0:
-            return who, f"roles: person {who} starts ('{texts[who]}'; the other: '{texts[1 - who]}')"
-    return 0, "person 0 starts (the one the prompt names first)"
+        if score[0] != score[1]:
+            who = int(np.argmax(score))
+            return who, f"roles: person {who} {verb} ('{texts[who]}'; the other: '{texts[1 - who]}')"
+    if kind in _FIRST_RESPONDS and re.search(_FIRST_RESPONDS[kind], prompt, re.I):
+        return 1, f"person 1 {verb} (the prompt's first-named one responds)"
+    return 0, f"person 0 {verb} (the one the prompt names first)"
 
 
 def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script | None:
@@ -141,7 +152,7 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
         reasons.append(why)
     if kind is None:
         return None
-    actor, who = _actor(kind, roles)
+    actor, who = _actor(kind, prompt, roles)
     approach = kind == "approach" or (kind in APPROACHABLE and bool(_match(_APPROACH, prompt)))
     held = kind == "side_by_side" and bool(_match(_HELD, prompt))
     if kind != "approach" and approach:

@@ -28,6 +28,7 @@ QUIET_WRIST_M = 0.08   # each wrist rises and falls at most this
 HANDS_LOW_M = 0.10     # each wrist on average at most this over the pelvis
 FEET_LEVEL_M = 0.04    # both feet down (their lowest points level within this)
 SWAY_M = 0.03          # the pelvis stays within this of where it stands
+STANCE_M = 0.35        # the ankles at most this far apart (not a wide stance)
 
 
 def _travel(j: np.ndarray) -> float:
@@ -138,15 +139,16 @@ class Library:
 
 
 def _quiet(b: Base) -> bool:
-    """A standing run with both arms and the head still, hands low, both feet down and the
-    pelvis in place (see the bounds above)."""
+    """A standing run with both arms and the head still, hands low, both feet down, close
+    together, and the pelvis in place (see the bounds above)."""
     j = b.clip.people[0][b.start:b.end]
     wy = j[:, [sk.LEFT_HAND, sk.RIGHT_HAND], 1]
     head = j[:, sk.HEAD, 1]
     sway = np.linalg.norm(j[:, sk.PELVIS][:, [0, 2]] - j[:, sk.PELVIS][:, [0, 2]].mean(axis=0), axis=1)
     feet = [np.minimum(j[:, sk.JOINT_INDEX[f"{s}_ankle"], 1] - 0.055, j[:, sk.JOINT_INDEX[f"{s}_foot"], 1]).mean()
             for s in ("left", "right")]
-    return bool(float((wy.max(0) - wy.min(0)).max()) <= QUIET_WRIST_M
+    stance = np.linalg.norm((j[:, sk.LEFT_ANKLE] - j[:, sk.RIGHT_ANKLE])[:, [0, 2]], axis=1).max()
+    return bool(float((wy.max(0) - wy.min(0)).max()) <= QUIET_WRIST_M and float(stance) <= STANCE_M
                 and float(wy.mean(0).max() - j[:, sk.PELVIS, 1].mean()) <= HANDS_LOW_M
                 and float(head.max() - head.min()) <= QUIET_HEAD_M and float(sway.max()) <= SWAY_M
                 and abs(feet[0] - feet[1]) <= FEET_LEVEL_M)

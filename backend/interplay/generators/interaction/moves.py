@@ -99,16 +99,23 @@ def _local(j: np.ndarray) -> np.ndarray:
     return j - j[:, [sk.PELVIS]] * XZ
 
 
-def _settle(stand: np.ndarray, pose: np.ndarray, ankle: int, toward_pose: np.ndarray) -> np.ndarray:
+def _settle(stand: np.ndarray, pose: np.ndarray, ankle: int, toward_pose: np.ndarray,
+            facing: float) -> np.ndarray:
     """Frames blending standing frames (n, 22, 3) and one walk pose (22, 3): weight
     `toward_pose` (n,) on the walk pose, the body placed so the walk pose's planted `ankle`
-    stays put; the standing frames are turned to the walk pose's facing first."""
-    yaw = yaw_of(pose[None]) - yaw_of(stand)
+    stays put; the standing frames are turned to `facing` (yaw: the walk's own, over a gait
+    cycle about that pose) first."""
+    yaw = facing - yaw_of(stand)
     loc_s = _local(stand) @ yaw_matrix(yaw).T
     w = toward_pose[:, None, None]
     loc = (1.0 - w) * loc_s + w * _local(pose[None])
     anchor = pose[ankle] * XZ
     return loc + (anchor - loc[:, ankle] * XZ)[:, None]
+
+
+def _cycle_yaw(w: np.ndarray, f: int, half: int = 12) -> float:
+    """The walk's mean facing over about a gait cycle around frame f."""
+    return yaw_of(w[max(0, f - half):f + half + 1])
 
 
 @dataclass
@@ -172,10 +179,12 @@ def locomote(w: np.ndarray, stand: np.ndarray, frames: int, g: Gait) -> tuple[np
     report: dict = {"go": g.go, "stop": stop, "walk_frames": [int(tau0), int(round(tau[-1]))]}
     if g.go is not None and ankle0 is not None and t0 > 0:
         k = np.arange(t0)
-        out[:t0] = _settle(stand[:t0], w[tau0], ankle0, ease((k - (t0 - g.settle_in)) / g.settle_in))
+        out[:t0] = _settle(stand[:t0], w[tau0], ankle0, ease((k - (t0 - g.settle_in)) / g.settle_in),
+                           _cycle_yaw(w, tau0))
     if stop is not None and ankle1 is not None and tau1 is not None:
         k = np.arange(stop, frames)
-        out[stop:] = _settle(stand[stop:frames], w[tau1], ankle1, 1.0 - ease((k - stop) / g.settle))
+        out[stop:] = _settle(stand[stop:frames], w[tau1], ankle1, 1.0 - ease((k - stop) / g.settle),
+                             _cycle_yaw(w, tau1))
         report["planted"] = sk.JOINT_NAMES[ankle1]
     report["travelled_m"] = round(float(np.linalg.norm((out[-1, sk.PELVIS] - out[0, sk.PELVIS])[[0, 2]])), 3)
     return refit(out), report

@@ -70,10 +70,15 @@ def clear(a: np.ndarray, b: np.ndarray, margin: float = BODY_MARGIN) -> tuple[np
 
 
 def finish(people: list[np.ndarray]) -> list[np.ndarray]:
-    """Both on the shared bones and the floor; the first person's pelvis at the origin facing
-    +Z on frame 0 (one transform for both)."""
+    """Both on the shared bones and the floor; the first person's pelvis at the origin on
+    frame 0, facing +Z there (or, when they travel more than a metre, travelling along +Z),
+    one transform for both."""
     people = [ground(refit(p)) for p in people]
-    yaw = -float(facing_angle(people[0][0]))
+    travel = (people[0][-1, sk.PELVIS] - people[0][0, sk.PELVIS])[[0, 2]]
+    if float(np.linalg.norm(travel)) > 1.0:
+        yaw = -float(np.arctan2(travel[0], travel[1]))
+    else:
+        yaw = -float(facing_angle(people[0][0]))
     rot = yaw_matrix(yaw)
     shift = (people[0][0, sk.PELVIS] @ rot.T) * np.array([1.0, 0.0, 1.0])
     return [p @ rot.T - shift for p in people]

@@ -33,7 +33,7 @@ def _arrive(c: Cast, person: int, stop_by: int) -> tuple[np.ndarray, np.ndarray,
     walk's frame, the standing clip they end in, report)."""
     w = mv.walk(c.rng, c.lib.walk_base(c.rng, c.walk_text(person), c.used()), 3 * c.frames)
     stand = mv.standing(c.rng, c.lib.pool, c.frames)
-    go = int(round(c.rng.uniform(0.2, 0.6) * sk.FPS))
+    go = int(round(c.rng.uniform(0.5, 0.8) * sk.FPS))
     j, rep = mv.locomote(w.joints, stand.joints, c.frames,
                          mv.Gait(go=go, metres=float(c.rng.uniform(*APPROACH_M)), stop_by=stop_by))
     c.source(person, w.source, "walk")
@@ -160,6 +160,12 @@ def push(c: Cast) -> list[np.ndarray]:
     b, moved = clear(a, b)
     people = [a, b]
     pp, pd = people[pusher], people[pushed]
+    # The pusher steps into the push as the other gives way.
+    toward = (pd[bt.start, sk.PELVIS] - pp[bt.start, sk.PELVIS]) * np.array([1.0, 0.0, 1.0])
+    toward /= max(float(np.linalg.norm(toward)), 1e-9)
+    lunge = float(rng.uniform(0.12, 0.2))
+    pp = mv.step(pp, _step_profile(frames, bt.start - 3, 10, None), lunge * toward,
+                 str(rng.choice(["left", "right"])))
     height = chest_y - float(pd[bt.start, SPINE3, 1])
     front = ct.chest(pd, height)
     ok = np.all([ct.within_reach(pp, arm, front + spread * pl.out_of(pp, arm), 0.97) for arm in ("left", "right")], axis=0)
@@ -169,5 +175,5 @@ def push(c: Cast) -> list[np.ndarray]:
     bt = Beat(bt.start, end, bt.ramp_in, bt.ramp_out)
     people[pusher] = ct.push(pp, pd, bt.weights(frames), height, spread)
     c.report["contact"] = {"kind": "push", **bt.to_json(), "hands": ["both", None],
-                           "pusher": pusher, "cleared_m": round(moved, 3)}
+                           "pusher": pusher, "pusher_step_m": round(lunge, 3), "cleared_m": round(moved, 3)}
     return people

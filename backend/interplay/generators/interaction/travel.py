@@ -17,7 +17,8 @@ from interplay.motion import skeleton as sk
 from interplay.motion.skeleton import FPS
 
 PACE = (0.8, 1.25)     # how much faster or slower a partner's walk may be played
-GAP_M = (0.7, 0.9)     # side by side: pelvis to pelvis
+GAP_M = (0.75, 0.95)   # side by side: pelvis to pelvis …
+HELD_GAP_M = (0.6, 0.75)  # … holding hands
 
 
 def _walker(c: Cast, person: int, pace_of: float | None = None) -> tuple[np.ndarray, float, np.ndarray]:
@@ -38,7 +39,7 @@ def _walker(c: Cast, person: int, pace_of: float | None = None) -> tuple[np.ndar
 
 
 def _go(c: Cast) -> int:
-    return int(round(c.rng.uniform(0.2, 0.5) * FPS))
+    return int(round(c.rng.uniform(0.5, 0.8) * FPS))
 
 
 def _side_by_side(c: Cast, stopper: int | None) -> list[np.ndarray]:
@@ -52,7 +53,7 @@ def _side_by_side(c: Cast, stopper: int | None) -> list[np.ndarray]:
     a, ra = mv.locomote(wa, stand_a, frames, gaits[0])
     b, rb = mv.locomote(wb, stand_b, frames, gaits[1])
     side = 1.0 if rng.random() < 0.5 else -1.0            # b on a's left (+X) or right
-    gap = float(rng.uniform(*GAP_M))
+    gap = float(rng.uniform(*(HELD_GAP_M if c.script.held else GAP_M)))
     a = turn_to(a, 0.0, np.zeros(2), current=0.0)
     b = turn_to(b, 0.0, np.array([side * gap, 0.0]), current=0.0)
     b, moved = clear(a, b)
