@@ -17,6 +17,7 @@ plan's script, so `stream` makes them again when they are not cached.
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from collections import OrderedDict
 from collections.abc import Iterator
@@ -114,7 +115,14 @@ class InteractionGenerator:
         try:
             people, composition = self.compose(script, req, seed, roles)
         except ValueError as exc:
-            return self._fallback(req, seed, f"the {script.kind} could not be composed ({exc})")
+            if not (script.approach and script.kind != "approach"):
+                return self._fallback(req, seed, f"the {script.kind} could not be composed ({exc})")
+            script = dataclasses.replace(script, approach=False, reasons=script.reasons + (
+                f"no time to walk up to each other first in {req.seconds:g} s ({exc}): they start close",))
+            try:
+                people, composition = self.compose(script, req, seed, roles)
+            except ValueError as exc2:
+                return self._fallback(req, seed, f"the {script.kind} could not be composed ({exc2})")
         plan = GenerationPlan.from_plan(base, seed=seed, generator=NAME, synthetic=True,
                                         composition=composition)
         clips = sorted({s["clip"] for p in composition["people"] for s in p["clips"]})

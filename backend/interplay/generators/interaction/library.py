@@ -4,7 +4,7 @@ movements done in place. numpy only (plus the index's text encoder).
 
 Each family is the clips whose label names the action and whose motion shows it (a wave
 clip must contain a wave by `checks.measures.waves`, a bow a bow, an arm clip arms that keep
-moving while the feet stay), from the train split when it has any (test captures stay unseen).
+moving while the feet stay, a walk backwards steps), from the train split when it has any (test captures stay unseen).
 Within a family the clip is chosen by the text encoder: the clips whose labels are nearest the
 person's text (their role, else the prompt), within MARGIN of the best, one drawn by the seed.
 """
@@ -57,10 +57,20 @@ def _arms(c: Clip) -> bool:
     return wrist >= 0.5 and bool(m.standing(b).mean() > 0.9)
 
 
+def _steps_back(c: Clip) -> bool:
+    """A walk backwards that steps (feet lifted and put down, ≥ 1 step a second) at ≥ 0.7 m/s:
+    some captured ones shuffle, their feet never leaving the floor."""
+    if c.frames < 40:
+        return False
+    b = m.frame_of(c.people[0].astype(np.float64))
+    seconds = c.frames / sk.FPS
+    return m.steps(b) >= seconds and m.path_length(b) / seconds >= 0.7
+
+
 FAMILIES = {
     "wave": (r"wave", _waves),
     "bow": (r"bows", _bows),
-    "walk_back": (r"walks backwards", lambda c: c.frames >= 40),
+    "walk_back": (r"walks backwards", _steps_back),
     "arms": (r"", _arms),
 }
 

@@ -49,7 +49,7 @@ def _side_by_side(c: Cast, stopper: int | None) -> list[np.ndarray]:
     wb, sb, stand_b = _walker(c, 1, pace_of=mv.speed(wa))
     gaits = [mv.Gait(go=go, scale=sa), mv.Gait(go=go, scale=sb)]
     if stopper is not None:
-        gaits[stopper].stop_by = frames - int(round(2.3 * FPS)) - 10
+        gaits[stopper].stop_by = frames - min(int(round(2.3 * FPS)) + 10, frames // 3)
     a, ra = mv.locomote(wa, stand_a, frames, gaits[0])
     b, rb = mv.locomote(wb, stand_b, frames, gaits[1])
     side = 1.0 if rng.random() < 0.5 else -1.0            # b on a's left (+X) or right
@@ -103,7 +103,7 @@ def approach(c: Cast) -> list[np.ndarray]:
     for person in (0, 1):
         w, s, stand = _walker(c, person)
         metres = float(rng.uniform(0.3, 0.4)) * frames / FPS
-        j, rep = mv.locomote(w, stand, frames, mv.Gait(go=_go(c), metres=metres, stop_by=frames - 25, scale=s))
+        j, rep = mv.locomote(w, stand, frames, mv.Gait(go=_go(c), metres=metres, stop_by=frames - min(25, frames // 5), scale=s))
         out.append(j)
         reports.append(rep)
     end = float(rng.uniform(0.9, 1.3))
