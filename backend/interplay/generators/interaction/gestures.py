@@ -18,7 +18,7 @@ from interplay.motion.pair.bases import face_forward
 from interplay.motion.pair.windows import mirror as mirrored
 from interplay.motion.skeleton import FPS
 
-MIRROR_LAG = 2         # frames (0.1 s) the mirroring person trails the leader
+MIRROR_LAG = 1         # frame (0.05 s) the mirroring person trails the leader
 
 
 def _clip(c: Cast, person: int, family: str) -> tuple[Clip, np.ndarray]:
@@ -88,12 +88,13 @@ def mirror(c: Cast) -> list[np.ndarray]:
     rng, frames = c.rng, c.frames
     lead = c.script.actor
     clip, j = _clip(c, lead, "arms")
-    # The stretch of the clip whose arms move most, padded when the clip is shorter.
+    # A stretch of the clip where the arms move (near the most), padded when the clip is shorter.
     speed = np.linalg.norm(np.diff(j[:, [m.J["left_wrist"], m.J["right_wrist"]]], axis=0), axis=-1).sum(1)
     n = frames + MIRROR_LAG
     if len(j) > n:
         windows = np.convolve(speed, np.ones(n - 1), mode="valid")
-        s = int(np.argmax(windows))
+        busy = np.flatnonzero(windows >= 0.85 * windows.max())
+        s = int(busy[rng.integers(len(busy))])
         j = j[s:s + n]
     else:
         j = extend(j, 0, n - len(j))
