@@ -97,3 +97,12 @@ def test_reading_tests_is_found(tmp_path):
     assert reads_tests(path)
     path.write_text("NAME = 'tests pass'\n")
     assert not reads_tests(path)
+
+
+def test_test_modules_have_unique_names():
+    # pytest's default import mode keys test modules by basename: two test_travel.py in
+    # different folders stop collection for the whole suite.
+    seen: dict[str, list[str]] = {}
+    for p in (ROOT / "tests").rglob("test_*.py"):
+        seen.setdefault(p.name, []).append(str(p.relative_to(ROOT)))
+    assert {name: paths for name, paths in seen.items() if len(paths) > 1} == {}
