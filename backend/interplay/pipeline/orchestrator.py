@@ -1,9 +1,9 @@
 """One generation job as CoMA's Algorithm 1: plan → per segment generate (the router's choice:
 SPAM for one person, CODA for two, retrieval as fallback; SPAM conditions each part on the
-plan's part edits) →
+plan's part edits) → for two people the penetration pass (`pair_pass`) →
 review rounds (reviewer.correct: part edits, in-betweens, re-draws) → trajectories (the plan's
-per segment, or the request's drawn path / preset for one person) → the blended whole →
-the caller's metrics and store.
+per segment, or the request's drawn path / preset for one person) → the penetration pass again
+where the paths made two people overlap → the blended whole → the caller's metrics and store.
 
     result = orchestrate(generator, req, emit, on_frames, cancelled=job.cancelled)
 
@@ -27,6 +27,7 @@ from interplay.generators.plan import GenerationPlan, GenerationSegment
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
+from interplay.pipeline import pair_pass
 from interplay.pipeline.segment_source import Cancelled, SegmentSource
 from interplay.review.reviewer import CannotApply, correct
 from interplay.trajectory.apply import TrajectoryConfig
@@ -128,16 +129,18 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         source = SegmentSource(generator, req, plan)
         kind = plan.generator
         spam = kind == "spam" and isinstance(generator, Editor) and generator.can_edit
-        history = []
+        history, resolutions = [], []
         for seg in plan.segments:
             i, a, b = seg.index, seg.start, seg.end
             emit({"type": "segment", "index": i, "status": "generating", "generator": kind})
             stage = "generate"
             source.fill(b, on_frames, cancelled)
+            done = _pair_pass(source, seg, on_frames)
+            resolutions += [done] if done else []
             if cfg.review and cfg.rounds > 0 and b - a >= 3:
                 stage = "review"
                 history.append(_review_segment(generator, source, seg, spam, evaluator, cfg,
-                                               emit, on_frames, plan.seed))
+                                               emit, on_frames, plan.seed, done is not None))
             if cancelled():
                 raise Cancelled()
             emit({"type": "segment", "index": i, "status": "done", "generator": kind})
@@ -147,6 +150,7 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         if first is not None:
             for s in range(first, people.shape[1], CHUNK):
                 on_frames(s, [p[s:s + CHUNK] for p in people])
+        resolutions += pair_pass.resolve_motion(people, source.plan, on_frames)
         plan = source.plan
         if trajectory is not None:
             plan = plan.model_copy()
@@ -154,6 +158,8 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         review = {"rounds": cfg.rounds, "tolerance": cfg.tolerance,
                   "score_kind": "evaluator" if evaluator is not None else "caption_agreement",
                   "segments": history}
+        if resolutions:
+            review["pair_resolution"] = resolutions
         return Outcome(people=[p.astype(np.float32) for p in people], plan=plan, review=review)
     except (Cancelled, StageError):
         raise
@@ -162,9 +168,16 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         raise StageError(stage, f"{type(exc).__name__}: {exc}") from exc
 
 
+def _pair_pass(source: SegmentSource, seg: GenerationSegment, on_frames) -> dict | None:
+    """The two-person penetration pass (`pair_pass`) on a segment just generated, in
+    `source`; its report when it changed the frames."""
+    return pair_pass.resolve_segment(source.people, source.plan, seg, on_frames)
+
+
 def _review_segment(generator: Generator, source: SegmentSource, seg: GenerationSegment,
                     spam: bool, evaluator,
-                    cfg: OrchestratorConfig, emit, on_frames, seed: int) -> dict:
+                    cfg: OrchestratorConfig, emit, on_frames, seed: int,
+                    resolved: bool = False) -> dict:
     """Review rounds on one segment; corrected frames go back into `source` and out again."""
     i, a, b = seg.index, seg.start, seg.end
     calls: list = []          # per applied instruction: the re-drawn source (or None)
@@ -195,8 +208,10 @@ def _review_segment(generator: Generator, source: SegmentSource, seg: Generation
         return [np.asarray(edit.joints, dtype=np.float64)[a:b]]
 
     window = [source.people[p, a:b].copy() for p in range(source.persons)]
+    last = i == len(source.plan.segments) - 1
     out = correct(seg, window, apply, evaluator=evaluator, rounds=cfg.rounds,
-                  tolerance=cfg.tolerance, seed=seed, emit=emit)
+                  tolerance=cfg.tolerance, seed=seed, emit=emit, resolved=resolved,
+                  free_ends=(i == 0, last))
     applied = [e for e in out.corrections if e["score_after"] is not None]
     redrawn = [c for c, e in zip(calls, applied) if e["accepted"] and c is not None]
     if redrawn:

@@ -1,6 +1,7 @@
 """The reviewer's commonsense checks on one segment's joints (one array per person): bone
 length deviation, centre-of-mass lean, foot skating, ground penetration and, for two people,
-body intersection (IF/IV) and missing hand contact when the text asks for a touch.
+interpenetration over issue 15's bound (`motion.pair.resolve.pair_bounds`, under the contact the
+text asks for: `contact_mode`) and missing hand contact when the text asks for a touch.
 
 Every check is a clip metric (`motion.metrics`) compared with a named threshold; the frames
 where skating, penetration or intersection spike are returned as windows [a, b) that an
@@ -16,6 +17,7 @@ import numpy as np
 
 from interplay.motion import metrics as mt
 from interplay.motion import skeleton as sk
+from interplay.motion.pair.resolve import pair_bounds
 from interplay.motion.signals import runs
 
 # Thresholds (a check fails above them). Retrieval/fitted motions keep bones to < 1 mm, so 1 cm
@@ -29,7 +31,6 @@ COM_OFFSET_M, COM_OFFSET_SHARE = 0.30, 0.40
 STANDING_PELVIS_M = 0.6
 SKATING_RATIO = 0.10
 PENETRATION_M = 0.02
-INTERSECTION_FREQ = 0.25      # the sphere body overlaps at ~10–20 % in captured salsa
 # Frame windows: a run of at least MIN_RUN bad frames, padded by PAD each side, is repainted.
 MIN_RUN, PAD = 3, 4
 SKATE_FRAME_SPEED = 1.0      # m/s: a planted foot this fast in one frame is a visible slide
@@ -39,6 +40,13 @@ PENETRATION_FRAME_M = 0.04
 CONTACT_VERBS = re.compile(r"\b(shak\w* hands?|handshake|high[- ]?fives?|hug\w*|embrac\w*|"
                            r"push\w*|shov\w*|hold\w* hands?|clap\w* hands with|pull\w*|"
                            r"slap\w*|touch\w*|carr(y|ies))\b", re.I)
+# The contact a two-person text asks for, as the penetration bound and its resolution take it
+# (`motion.pair.resolve`): a hug puts the arms round the partner; the other contact verbs, and
+# dancing as a couple (the benchmark's prompts mark it as contact: captured salsa holds hands
+# and turns close), let hands and forearms touch; anything else touches nowhere.
+HUG_WORDS = re.compile(r"\b(hug\w*|embrac\w*|cuddl\w*)\b", re.I)
+COUPLE_DANCE = re.compile(r"\b(salsa|tango|waltz\w*|ballroom|couples?|partners?|leader|follower)\b|"
+                          r"\bdanc\w*\s+(together|with)\b", re.I)
 # Metrics the correction loop must not make worse (lower is better for each).
 WATCHED = ("bone_deviation", "com_lean", "skating_ratio", "foot_skating", "ground_penetration",
            "floating", "intersection_frequency", "intersection_volume")
@@ -93,6 +101,14 @@ def wants_contact(text: str) -> bool:
     return bool(CONTACT_VERBS.search(text or ""))
 
 
+def contact_mode(text: str) -> str:
+    """"hug", "hands" or "none": the contact `text` asks for (`motion.pair.resolve.CONTACTS`)."""
+    text = text or ""
+    if HUG_WORDS.search(text):
+        return "hug"
+    return "hands" if CONTACT_VERBS.search(text) or COUPLE_DANCE.search(text) else "none"
+
+
 def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> Checks:
     """Checks of one segment (people: (T, 22, 3) arrays, T ≥ 3)."""
     people = [np.asarray(p, dtype=np.float64) for p in people]
@@ -120,17 +136,26 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
         slide[1:-1] = (plant & (speed > SKATE_FRAME_SPEED)).any(axis=1)
         windows += _windows(slide, "foot skating", t)
         windows += _windows(mt.ground_penetration(p) > PENETRATION_FRAME_M, "ground penetration", t)
-    if len(people) == 2 and not wants_contact(text):   # a touch is expected to overlap
-        if m["intersection_frequency"] > INTERSECTION_FREQ:
-            failed["penetration"] = (f"the two bodies intersect in "
-                                     f"{m['intersection_frequency']:.0%} of the frames "
-                                     f"({m['intersection_volume']:.0f} cm³ a frame)")
-        windows += _windows(mt.pair_geometry(people[0], people[1])["overlap"], "body intersection", t)
+    if len(people) == 2:
+        mode = contact_mode(text)
+        bound = pair_bounds(people[0], people[1], mode)
+        if not bound["ok"]:
+            failed["interpenetration"] = penetration_reason(bound)
+        if mode == "none":                              # a touch is expected to overlap
+            windows += _windows(mt.pair_geometry(people[0], people[1])["overlap"],
+                                "body intersection", t)
     if len(people) == 2 and wants_contact(text) and m["contact_frames"] == 0:
         verb = CONTACT_VERBS.search(text)       # wants_contact(text) matched it
         failed["missing_contact"] = (f"'{verb.group(0) if verb else text}' needs a touch, "
                                      "but the hands never reach the other person")
     return Checks(metrics=m, failed=failed, windows=_merge(windows))
+
+
+def penetration_reason(bound: dict) -> str:
+    """The words of a failed penetration bound (`pair_bounds`)."""
+    return (f"the two bodies pass through each other: {bound['if']:.0%} of the frames over 2 cm "
+            f"deep, {bound['if_any']:.0%} at all, {bound['depth_cm']:.1f} cm deep on average "
+            f"(bound: {bound['bound']})")
 
 
 def worse(before: dict, after: dict, tolerance: float = 0.1,

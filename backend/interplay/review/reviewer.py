@@ -5,7 +5,12 @@ plan by MiniLM — the result says which), commonsense checks (`review_checks`),
 comparison with the plan in the spirit of F.3 (`review_text`): each part with a planned edit
 is confirmed by its caption or gets an `edit_part` instruction; bad frame windows get an
 `inbetween`; a segment whose body caption contradicts its base motion (or that misses a
-touch the text asks for) gets `regenerate` with a new seed.
+touch the text asks for) gets `regenerate` with a new seed. Two people over the penetration
+bound (issue 15: `motion.pair.resolve.pair_bounds`) get `resolve_penetration`, which the
+reviewer runs itself (`motion.pair.resolve.resolve_pair`, keeping the contact the text asks
+for), and `regenerate` when the resolution has already run and the bound still fails; every
+two-person correction is resolved the same way before it is reviewed. So a review never says
+"ok" to two people over the bound.
 
     rv = review(segment, [joints])            # Review: captions, score, checks, instructions
     out = correct(segment, [joints], apply)   # ≤ K rounds; a round that makes it worse stops
@@ -24,10 +29,11 @@ import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.captions import PARTS, summarise
+from interplay.motion.pair.resolve import resolve_pair
 from interplay.motion.posecodes import caption_clip
 from interplay.planner.schema import Segment
 from interplay.review.agreement import BODY_CUES, caption_agreement, confirms
-from interplay.review.checks import Checks, commonsense, worse
+from interplay.review.checks import Checks, commonsense, contact_mode, worse
 from interplay.review.evaluator import Evaluator
 from interplay.text.encoder import Encoder
 
@@ -35,6 +41,7 @@ PLAN_PART = {"left_arm": "left_upper", "right_arm": "right_upper",
              "left_leg": "left_lower", "right_leg": "right_lower"}
 REGENERATE_SCORE = 0.25       # caption agreement under this, with no body cue: the segment is off
 MAX_INSTRUCTIONS = 3          # per round (a regenerate goes alone)
+RESOLVE = "resolve_penetration"
 SCORE_EPS = 1e-6
 
 
@@ -89,9 +96,10 @@ def _texts(seg: Segment, persons: int) -> list[str]:
 
 
 def review(seg: Segment, joints, evaluator: Evaluator | None = None,
-           encoder: Encoder | None = None, round: int = 0) -> Review:
+           encoder: Encoder | None = None, round: int = 0, resolved: bool = False) -> Review:
     """Review one planned segment: `joints` one (T, 22, 3) array per person for the segment's
-    frames (T ≥ 3)."""
+    frames (T ≥ 3). `resolved`: the penetration resolution has already run on these frames
+    (then a pair still over the bound is re-generated rather than resolved again)."""
     people = [np.asarray(p, dtype=np.float64) for p in joints]
     if not people or any(p.ndim != 3 or p.shape[1:] != (sk.NUM_JOINTS, 3) for p in people):
         raise ValueError(f"joints must be one (T, 22, 3) array per person, got "
@@ -135,9 +143,13 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
         regenerate = f"the captions ('{summary0}') hardly agree with '{seg.prompt}'"
     elif "missing_contact" in checks.failed:
         regenerate = checks.failed["missing_contact"]
+    elif "interpenetration" in checks.failed and resolved:
+        regenerate = checks.failed["interpenetration"] + ", after the resolution"
     if regenerate:
         instructions = [{"kind": "regenerate", "prompt": seg.prompt, "reason": regenerate}]
     else:
+        if "interpenetration" in checks.failed:
+            instructions.insert(0, {"kind": RESOLVE, "reason": checks.failed["interpenetration"]})
         instructions += [{"kind": "inbetween", "frames": [a, b], "prompt": seg.prompt,
                           "reason": f"{r} in frames {a}–{b}"} for a, b, r in checks.windows]
     instructions = instructions[:MAX_INSTRUCTIONS]
@@ -171,18 +183,48 @@ class Corrected:
         return {"reviews": [r.to_json() for r in self.reviews], "corrections": self.corrections}
 
 
+def resolve_people(seg: Segment, people: list[np.ndarray],
+                   free_ends: tuple[bool, bool] = (True, True)) -> tuple[list[np.ndarray], dict]:
+    """Two people with their penetration resolved under the contact `seg`'s text asks for
+    (`motion.pair.resolve.resolve_pair`; unchanged within the bound), and the report."""
+    a, b, report = resolve_pair(people[0], people[1], contact_mode(seg.prompt), *free_ends)
+    return [a, b], report
+
+
+def resolution_words(report: dict) -> str:
+    """What a resolution did, for a correction's reason."""
+    b, a = report["before"], report["after"]
+    return (f"moved apart by up to {report['moved_m']:.2f} m, {report['arm_frames']} arm frames "
+            f"re-solved, {report['frames']} frames changed: IF {b['if']:.2f} → {a['if']:.2f}, "
+            f"any overlap {b['if_any']:.2f} → {a['if_any']:.2f}, depth {b['depth_cm']:.1f} → "
+            f"{a['depth_cm']:.1f} cm" + ("" if a["ok"] else f" (still over the bound: {a['bound']})"))
+
+
+def _better(before: dict, after: dict) -> bool:
+    """The penetration bound is met after, or none of its measures got worse and one fell."""
+    keys = ("if", "if_any", "depth_cm")
+    return after["ok"] or (all(after[k] <= before[k] for k in keys)
+                           and any(after[k] < before[k] for k in keys))
+
+
 def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None = None,
             rounds: int = 2, tolerance: float = 0.1, seed: int = 0, encoder: Encoder | None = None,
-            emit: Callable[[dict], None] | None = None) -> Corrected:
+            emit: Callable[[dict], None] | None = None, resolved: bool = False,
+            free_ends: tuple[bool, bool] = (True, True)) -> Corrected:
     """Algorithm 1's self-correction loop on one segment: review, run the instructions through
     `apply`, at most `rounds` rounds. A correction is kept only if the score does not drop and
     no watched metric gets worse beyond `tolerance`; otherwise the previous motion is kept and
-    the loop stops. `emit` receives the review and correction events."""
+    the loop stops. `emit` receives the review and correction events.
+
+    Two people: `resolve_penetration` is run here (`resolve_people`, the segment's edges free
+    or eased as `free_ends` says) and kept when it meets the penetration bound or lowers it
+    (bones cannot change: rigid moves and IK); whatever `apply` returns for two people is
+    resolved before it is reviewed. `resolved`: the frames given were resolved already."""
     if rounds < 0:
         raise ValueError(f"rounds must be ≥ 0, got {rounds}")
     emit = emit or (lambda e: None)
     people = [np.asarray(p, dtype=np.float64) for p in joints]
-    current = review(seg, people, evaluator, encoder, round=0)
+    current = review(seg, people, evaluator, encoder, round=0, resolved=resolved)
     emit(current.event())
     reviews, corrections, stop = [current], [], False
     rng = np.random.default_rng([seed % 2**63, seg.index])
@@ -194,23 +236,37 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
             event = {"type": "correction", "segment": current.segment, "round": r,
                      "instruction": instr, "accepted": False, "score_before": current.score,
                      "score_after": None}
+            report = None
             try:
-                candidate = apply(instr, people, int(rng.integers(2**31)))
+                if instr["kind"] == RESOLVE:
+                    candidate, report = resolve_people(seg, people, free_ends)
+                else:
+                    candidate = apply(instr, people, int(rng.integers(2**31)))
+                    if len(candidate) == 2:
+                        candidate, _ = resolve_people(seg, candidate, free_ends)
             except CannotApply as exc:
                 event["reason"] = str(exc)
                 corrections.append(event)
                 emit(event)
                 continue
-            after = review(seg, candidate, evaluator, encoder, round=r)
-            worse_keys = worse(current.metrics, after.metrics, tolerance)
+            two = len(candidate) == 2
+            after = review(seg, candidate, evaluator, encoder, round=r, resolved=resolved or two)
             event["score_after"] = after.score
-            if after.score + SCORE_EPS >= current.score and not worse_keys:
+            if report is not None:
+                # a physical fix: kept when the bound is met or lower, whatever the text score
+                ok = _better(report["before"], report["after"])
+                event["reason"] = resolution_words(report)
+            else:
+                worse_keys = worse(current.metrics, after.metrics, tolerance)
+                ok = after.score + SCORE_EPS >= current.score and not worse_keys
+                if not ok:
+                    event["reason"] = ("the score dropped" if after.score + SCORE_EPS < current.score
+                                       else f"worse {', '.join(worse_keys)}")
+            if ok:
                 event["accepted"] = True
                 people = [np.asarray(p, np.float64) for p in candidate]
-                current, changed = after, True
+                current, changed, resolved = after, True, resolved or two
             else:
-                event["reason"] = ("the score dropped" if after.score + SCORE_EPS < current.score
-                                   else f"worse {', '.join(worse_keys)}")
                 stop = True
             corrections.append(event)
             emit(event)
@@ -218,7 +274,7 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 break
         if not changed:
             break
-        current = review(seg, people, evaluator, encoder, round=r)
+        current = review(seg, people, evaluator, encoder, round=r, resolved=resolved)
         emit(current.event())
         reviews.append(current)
     return Corrected(people=people, reviews=reviews, corrections=corrections)
