@@ -60,9 +60,12 @@ def test_one_person_uses_spam_and_streams_exact_frames(spam_gen):
 
 @pytest.mark.parametrize("persons", [1, 2])
 def test_the_router_plans_with_retrieve_edit_and_says_why(spam_gen, persons):
+    # two people: a dance is no interaction the composition makes, so retrieve-then-edit does
     plan = spam_gen.plan(Request("a person walks forward" if persons == 1 else "two people dance salsa",
                                  persons=persons, seconds=4, seed=1))
     assert plan.generator == "retrieve_edit" and "real captured clips" in plan.generator_reason
+    if persons == 2:
+        assert plan.generator_reason.startswith("composition: no interaction it composes")
 
 
 @pytest.mark.parametrize("case", ["missing", "broken", "placeholder"])

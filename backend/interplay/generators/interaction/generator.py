@@ -24,7 +24,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from interplay.generators.base import Request, generate_motion, random_seed
+from interplay.generators.base import Generator, Request, generate_motion, random_seed
 from interplay.generators.interaction import gestures, touches, travel
 from interplay.generators.interaction.bodies import SHARED
 from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, read_script, why_not
@@ -89,18 +89,20 @@ def _texts(prompt: str, roles: dict | None) -> list[str]:
 
 class InteractionGenerator:
     """Two-person interactions composed from real clips (see the module doc); `index` is the
-    retrieval index whose clips it uses (and whose generator serves what it does not)."""
+    retrieval index whose clips it uses; `retrieval` serves what it does not compose (the
+    retrieval generator over the same index by default; the router gives retrieve-then-edit)."""
 
-    def __init__(self, index: RetrievalIndex, retrieval: RetrievalGenerator | None = None):
+    def __init__(self, index: RetrievalIndex, retrieval: Generator | None = None):
         self.index = index
-        self.retrieval = retrieval if retrieval is not None else RetrievalGenerator(index)
+        self.retrieval: Generator = retrieval if retrieval is not None else RetrievalGenerator(index)
         self.library = Library.of_index(index)
         self._frames: OrderedDict[tuple, list[np.ndarray]] = OrderedDict()
 
     # -- planning ----------------------------------------------------------------------------
     def _fallback(self, req: Request, seed: int, why: str) -> GenerationPlan:
         plan = self.retrieval.plan(Request(req.prompt, req.persons, req.seconds, seed))
-        plan.generator_reason = f"composition: {why}; the retrieval generator made this instead"
+        own = f" ({plan.generator_reason})" if plan.generator_reason else ""
+        plan.generator_reason = f"composition: {why}; the {plan.generator} generator made this instead{own}"
         return plan
 
     def plan(self, req: Request) -> GenerationPlan:
