@@ -29,10 +29,17 @@ def cmd_bench(args) -> int:
         report["default"] = run_default_bench(runs=args.runs, warmup=args.warmup)
         tables.append(format_default_table(report["default"]))
     if only in (None, "pair"):
-        from interplay.bench.pair import format_pair_table, run_pair_bench
+        from interplay.bench.pair import (
+            format_default_pair_table,
+            format_pair_table,
+            run_default_pair_bench,
+            run_pair_bench,
+        )
         report["pair"] = run_pair_bench(get_settings().coda_dir, runs=args.runs,
                                         warmup=args.warmup)
         tables.append(format_pair_table(report["pair"]))
+        report["pair_default"] = run_default_pair_bench(runs=args.runs, warmup=args.warmup)
+        tables.append(format_default_pair_table(report["pair_default"]))
     if only in (None, "reaction"):
         from interplay.bench.reaction import format_reaction_table, run_reaction_bench
         report["reaction"] = run_reaction_bench()

@@ -19,9 +19,11 @@ def cmd_eval_pair(args) -> int:
         raise CliError("--limit must be at least 1")
     if args.contact_seeds < 0:
         raise CliError("--contact-seeds must be 0 or more")
+    if args.bounds_seeds < 0:
+        raise CliError("--bounds-seeds must be 0 or more")
     try:
         report = run_eval_pair(rows, repeats=args.repeats, seed=args.seed, limit=args.limit,
-                               contact_seeds=args.contact_seeds,
+                               contact_seeds=args.contact_seeds, bounds_seeds=args.bounds_seeds,
                                log=lambda m: print(m, file=sys.stderr))
     except (ValueError, FileNotFoundError) as exc:
         raise CliError(str(exc)) from None
@@ -30,9 +32,10 @@ def cmd_eval_pair(args) -> int:
 
 
 def register(sub) -> None:
-    p = sub.add_parser("eval-pair", help="two-person generation (real, retrieval, CODA and its "
-                       "ablations) on the test split's pairs: FID, IV, IF, contacts, skating, "
-                       "bones, penetration with 95%% intervals, and the contact check")
+    p = sub.add_parser("eval-pair", help="two-person generation (real, retrieval, composition, the "
+                       "product default, CODA and its ablations) on the test split's pairs: FID, "
+                       "IV, IF, contacts, skating, bones, penetration with 95%% intervals, the "
+                       "contact check and the penetration bounds on the benchmark's prompts")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.add_argument("--repeats", type=int, default=3, help="repeats for the intervals (default 3)")
     p.add_argument("--rows", help="comma-separated: " + ",".join(ROW_NAMES) + " (default all; "
@@ -40,5 +43,8 @@ def register(sub) -> None:
     p.add_argument("--limit", type=int, help="at most this many test windows per set (quick runs)")
     p.add_argument("--contact-seeds", type=int, default=10,
                    help="samples per contact prompt and row (default 10; 0 skips the check)")
+    p.add_argument("--bounds-seeds", type=int, default=2,
+                   help="outputs per two-person prompt of the eval-prompts test split for the "
+                   "penetration bounds (default 2; 0 skips them)")
     p.add_argument("--seed", type=int, default=0)
     p.set_defaults(func=cmd_eval_pair)

@@ -40,7 +40,9 @@ WEIGHTS = Path(__file__).resolve().parents[3] / "models" / "weights"
 CODA_ROWS = ("coda", "coda_noics", "coda_nogdm", "coda_noppl")
 # coda_raw: the shipped weights' raw samples; coda: the product's pipeline on them (the
 # contact refinement of `agents.contact_refine` for prompts that ask for a touch).
-ROW_NAMES = ("real", "retrieval", "coda_raw") + CODA_ROWS
+# compose: interaction by composition alone; default: the product's router through the job
+# pipeline (composition or retrieve-then-edit, the penetration pass, review rounds).
+ROW_NAMES = ("real", "retrieval", "compose", "default", "coda_raw") + CODA_ROWS
 SCORES = ("iv_cm3", "if", "contact_frames", "foot_skating", "bone_deviation", "penetration_cm")
 Generate = Callable[[str, int, int], np.ndarray]     # (prompt, frames, seed) → (2, frames, 22, 3)
 
@@ -140,6 +142,40 @@ def _retrieval(clips) -> Generate:
     return generate
 
 
+def _stack(people, frames: int) -> np.ndarray:
+    return np.stack([np.asarray(p, np.float64)[:frames] for p in people])
+
+
+def _compose(clips) -> Generate:
+    from interplay.generators.base import Request, generate_motion
+    from interplay.generators.interaction.generator import InteractionGenerator
+    from interplay.generators.retrieval.index import RetrievalIndex
+    from interplay.text.encoder import get_encoder
+    gen = InteractionGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+
+    def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
+        req = Request(prompt, persons=2, seconds=frames / sk.FPS, seed=seed)
+        return _stack(generate_motion(gen, req).people, frames)
+    return generate
+
+
+def _default(clips) -> Generate:
+    """The studio's path over the train split's clips (no models: two people need none; the
+    review scores by caption agreement)."""
+    from interplay.generators.base import Request
+    from interplay.generators.retrieval.index import RetrievalIndex
+    from interplay.generators.router import Router
+    from interplay.pipeline.orchestrator import orchestrate
+    from interplay.text.encoder import get_encoder
+    router = Router(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+
+    def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
+        req = Request(prompt, persons=2, seconds=frames / sk.FPS, seed=seed)
+        out = orchestrate(router, req, lambda e: None, lambda s, c: None)
+        return _stack(out.people, frames)
+    return generate
+
+
 def _coda(weights: Path, product: bool = False) -> Generate:
     from interplay.generators.coda.finish import finish_pair
     from interplay.generators.coda.runtime import CodaRuntime
@@ -166,6 +202,10 @@ def load_row(name: str, clips, weights: Path = WEIGHTS) -> Generate | None:
         return None
     if name == "retrieval":
         return _retrieval(clips)
+    if name == "compose":
+        return _compose(clips)
+    if name == "default":
+        return _default(clips)
     if name == "coda_raw":
         return _coda(Path(weights) / "coda")
     if name in CODA_ROWS:

@@ -109,9 +109,11 @@ def _row_repeats(gen, sub, emb, ref, ref_train, real_scores, repeats, seed, rng)
 
 
 def run_eval_pair(rows=ROW_NAMES, repeats: int = 3, seed: int = 0, limit: int | None = None,
-                  contact_seeds: int = 10, clips=None, weights=None, log=None) -> dict:
+                  contact_seeds: int = 10, clips=None, weights=None, log=None,
+                  bounds_seeds: int = 2) -> dict:
     """{"sets": {"captured"|"composed": {"windows", "rows": {row: {col: [mean, hw]}}}},
-    "skipped": {row: why}, "fid_embedding", "contact": contact_check(...)}."""
+    "skipped": {row: why}, "fid_embedding", "contact": contact_check(...),
+    "bounds": pair_bounds.bounds_check(...) (bounds_seeds 0 skips it)}."""
     from interplay.eval.pair import WEIGHTS
     from interplay.motion.clip import default_clips
     if repeats < 2:
@@ -148,6 +150,9 @@ def run_eval_pair(rows=ROW_NAMES, repeats: int = 3, seed: int = 0, limit: int | 
         report["sets"][kind] = out
     if contact_seeds > 0:
         report["contact"] = contact_check(generators, clips, contact_seeds, seed, log)
+    if bounds_seeds > 0:
+        from interplay.eval.pair_bounds import bounds_check
+        report["bounds"] = bounds_check(generators, "test", bounds_seeds, seed, log)
     return report
 
 
@@ -183,4 +188,7 @@ def format_table(report: dict) -> str:
             lines.append(f"  {kind:<18}{str(k['window'][0]) + '–' + str(k['window'][1]):>10}{cells}")
         for kind, k in contact["kinds"].items():
             lines.append(f"  {kind}: \"{k['prompt']}\"")
+    if report.get("bounds"):
+        from interplay.eval.pair_bounds import format_bounds
+        lines.append(format_bounds(report["bounds"]))
     return "\n".join(lines)
