@@ -9,6 +9,9 @@ captures can give:
 3. a direction of travel (backwards, sideways): views that travel that way;
 4. a named side (a right kick, the left hand): views of that side.
 
+A first segment that asks nothing more is still drawn to start standing (unless its intent
+starts elsewhere).
+
 A track may last fewer frames than its segment: the generator then holds its last pose (a
 posture reached and kept, the quiet after a counted action) to the segment's end.
 """
@@ -42,6 +45,10 @@ def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.G
     """The pieces of one person's track for a segment (see the module doc)."""
     plain = lambda: index.track(text, frames, rng, after=after)  # noqa: E731
     if intent.plain:
+        if after is None and intent.start in (None, "standing"):
+            # a motion starts standing unless asked otherwise: runs, dances and hops captured
+            # mid-stride or mid-step are drawn again (`verify.pick`)
+            return verify.pick(index, plain, frames, verify.checks(intent, first=True)) or plain()
         return plain()
     start, end = start_end(index, intent, after)
     draw: Callable[[], list[dict] | None] | None = None
