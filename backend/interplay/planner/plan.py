@@ -97,6 +97,42 @@ def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temp
     return out
 
 
+# "a tuck jump", "one squat", "a karate front kick": a count of one that the rewrite to the
+# data's words ("jumps", "kicks high forward …") would drop; "jumping jacks" count nothing.
+COUNTABLE = r"(?:jump|kick|punch|squat|hop|cartwheel|flip|somersault|lunge|jab|leap|spin)"
+ONE_ACTION = re.compile(rf"\b(?:a|an|one|single)\s+(?:[a-z-]+\s+){{0,3}}?{COUNTABLE}s?\b"
+                        r"(?!\s+(?:jacks?|ropes?))", re.I)
+COUNTED = re.compile(r"\b(?:once|twice|thrice|times|\d+)\b", re.I)
+
+
+def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) -> None:
+    """Keep a count of one the words asked for (ONE_ACTION) as "once" on the action."""
+    said = ONE_ACTION.search(split_subject(clause)[1])      # not the subject's "a person"
+    if repeat != 1 or said is None or COUNTED.search(action.text) or ONE_ACTION.search(action.text):
+        return
+    action.text = f"{action.text} once"
+    if action.verb is None or action.verb.kind != "part":     # a kick's base is the stand
+        action.base = f"{action.base} once"
+    reasons.append(f"count: '{said.group(0)}' is one, kept as 'once'")
+
+
+# "punches with the left fist, then the right": the same action with the other side.
+_SIDE_ONLY = re.compile(r"^(?:and\s+|then\s+)*(?:with\s+|using\s+)?(?:the\s+)?(left|right)"
+                        r"(?:\s+(?:one|fist|hand|arm|leg|foot|side))?$")
+_SIDES = re.compile(r"\b(left|right)\b")
+
+
+def _other_side(clause, before: Action, reasons: list[str]) -> None:
+    """A clause that only names a side after an action with one: that action, on this side."""
+    m = _SIDE_ONLY.match(clause.text.strip())
+    if m is None or not _SIDES.search(before.text):
+        return
+    side = m.group(1)
+    text = _SIDES.sub(side, before.text, count=1)
+    reasons.append(f"ellipsis: '{clause.text}' is '{text}' (the action before, on the {side})")
+    clause.text = text
+
+
 def _stop_words(action: Action, before: Action | None) -> None:
     """"walks, then stops" → "stops walking and stands still": what stops, and what follows."""
     if action.verb is not None and action.verb.base == "stop" and action.text == "stops" and \
@@ -157,6 +193,8 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
         return IDLE.get(postures[person], IDLE["standing"])
 
     for clause in clauses:
+        if steps:
+            _other_side(clause, steps[-1].action, reasons)
         if steps and _CLOCK_TURN.match(clause.text) and steps[-1].action.verb is not None \
                 and steps[-1].action.verb.kind == "travel":     # "walks 5 m and turns right at 3 o'clock"
             before = steps[-1]
@@ -182,6 +220,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             if action is None:
                 continue
         _stop_words(action, last.get(actors[0], (None, None))[1])
+        _count_of_one(action, clause.text, clause.repeat, reasons)
         if clause.hold:                     # "raises both arms and keeps them up", "kneels … and stays"
             action.text = f"{action.text} and {clause.hold}"
             if action.verb is not None and action.verb.kind != "part":

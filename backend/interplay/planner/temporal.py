@@ -60,6 +60,10 @@ _NOUN_ACT = re.compile(
     r"executed|executing)\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
     r"several|a\s+few)\s+)?((?:(?:full|quick|big|small|deep|little|high|low|single|double|"
     r"perfect|powerful|fast|slow)\s+)*)([\w-]+)\b")
+# Actions whose count of one the words keep ("does a squat" → "squats once"): the checks and
+# the retrieval count them.
+COUNTED_ONCE = {"jump", "kick", "punch", "squat", "hop", "cartwheel", "flip", "somersault",
+                "lunge", "jab", "leap"}
 _FROM_TO = re.compile(
     r"(?:(?:picks?|picked|picking)\s+up\s+speed\s+|speeds?\s+up\s+|(?:goes|went|transitions?|"
     r"changes?|switch(?:es)?|moves?)\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?"
@@ -138,6 +142,8 @@ def _noun_to_verb(text: str) -> tuple[str, int]:
         if verb is None:
             continue
         around = " around" if verb in ("turn", "spin") and "full" in (adj or "") else ""
+        if det in ("a", "an", "one") and verb in COUNTED_ONCE:
+            around += " once"               # "does one squat", "throws a punch": one, said
         return f"{head}{third(verb)}{around}{rest}", count
     return text, 1
 
