@@ -16,11 +16,13 @@ test("re-running segment 2 of 3 keeps segments 1 and 3; undo restores the old se
   const v1 = await waitDone(page);
   const old = await motionOf(page, v1.motionId!);
   const segs = (old.plan.segments as { start: number; end: number }[]).map((s) => [s.start, s.end]);
-  expect(segs).toEqual([
-    [0, 60],
-    [60, 90],
-    [90, 120],
-  ]);
+  // three segments over the 120 frames, in order (the planner gives the walk the most time)
+  expect(segs.length).toBe(3);
+  expect(segs[0][0]).toBe(0);
+  expect(segs[2][1]).toBe(120);
+  expect(segs[1][0]).toBe(segs[0][1]);
+  expect(segs[2][0]).toBe(segs[1][1]);
+  const [a1, b1] = segs[1];
   await expect(page.getByTestId("version-label")).toHaveText("v1 / 1");
 
   // what the progress says meanwhile (the re-run may be over before an assertion could look)
@@ -48,9 +50,9 @@ test("re-running segment 2 of 3 keeps segments 1 and 3; undo restores the old se
   expect(now.parent_id).toBe(v1.motionId);
   const a = old.people[0].joints, b = now.people[0].joints;
   expect(b).toHaveLength(120);
-  expect(same(a.slice(0, 60), b.slice(0, 60))).toBe(true); // segment 1: the same joints
-  expect(same(a.slice(90), b.slice(90))).toBe(true); // segment 3: the same joints
-  expect(maxDiff(a.slice(62, 88), b.slice(62, 88))).toBeGreaterThan(0.01); // segment 2: new
+  expect(same(a.slice(0, a1), b.slice(0, a1))).toBe(true); // segment 1: the same joints
+  expect(same(a.slice(b1), b.slice(b1))).toBe(true); // segment 3: the same joints
+  expect(maxDiff(a.slice(a1 + 2, b1 - 2), b.slice(a1 + 2, b1 - 2))).toBeGreaterThan(0.01); // segment 2: new
   // the page plays the new version: its frames are the stored ones
   for (const t of [30, 75, 105]) {
     const shown = await page.evaluate((t) => window.__interplay.frameJoints(0, t), t);
@@ -63,7 +65,7 @@ test("re-running segment 2 of 3 keeps segments 1 and 3; undo restores the old se
   await expect(page.getByTestId("version-label")).toHaveText("v1 / 2");
   await expect(page).toHaveURL(new RegExp(`/m/${v1.motionId}$`));
   expect((await hook(page)).motionId).toBe(v1.motionId);
-  for (const t of [65, 75, 85]) {
+  for (const t of [a1 + 5, Math.round((a1 + b1) / 2), b1 - 5]) {
     const shown = await page.evaluate((t) => window.__interplay.frameJoints(0, t), t);
     expect(maxDiff([shown!], [a[t]])).toBeLessThan(1e-4);
   }

@@ -24,6 +24,8 @@ import numpy as np
 
 from interplay.generators.base import Editor, Generator, Request
 from interplay.generators.plan import GenerationPlan, GenerationSegment
+from interplay.generators.retrieval.intent import intent
+from interplay.generators.retrieval.verify import checks as asked_checks
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
@@ -174,6 +176,14 @@ def _pair_pass(source: SegmentSource, seg: GenerationSegment, on_frames) -> dict
     return pair_pass.resolve_segment(source.people, source.plan, seg, on_frames)
 
 
+def asked_of(seg: GenerationSegment) -> list[dict]:
+    """The benchmark's checks (specs for `run_check`) that one person's segment words imply:
+    the retrieval's reading of them (`retrieval.intent`, `retrieval.verify.checks`); the first
+    segment starts standing unless it is asked to start elsewhere."""
+    it = intent(seg.prompt, seg.repeat, seg.travel)
+    return asked_checks(it, it.start, it.end, first=seg.index == 0)
+
+
 def _review_segment(generator: Generator, source: SegmentSource, seg: GenerationSegment,
                     spam: bool, evaluator,
                     cfg: OrchestratorConfig, emit, on_frames, seed: int,
@@ -192,10 +202,14 @@ def _review_segment(generator: Generator, source: SegmentSource, seg: Generation
             other, frames = source.redraw(i, s)
             calls.append(other)
             return frames
-        if not spam or source.persons != 1 or not isinstance(generator, Editor):
+        # SPAM re-makes a SPAM segment's parts and frames; on captured clips (retrieval,
+        # retrieve-then-edit) it makes the in-betweens over bad frames, kept only if better
+        editor = isinstance(generator, Editor) and generator.can_edit
+        if not (spam or editor and kind == "inbetween") or source.persons != 1 \
+                or not isinstance(generator, Editor):
             why = ("this segment has two people" if source.persons != 1
                    else (generator.reason if isinstance(generator, Editor) else None)
-                   or "not loaded")
+                   or ("a captured segment is re-drawn, not edited" if editor else "not loaded"))
             raise CannotApply(f"{kind} needs the SPAM model for one person ({why})")
         full = source.people[0, :source.written].copy()
         full[a:b] = people[0]
@@ -211,7 +225,7 @@ def _review_segment(generator: Generator, source: SegmentSource, seg: Generation
     last = i == len(source.plan.segments) - 1
     out = correct(seg, window, apply, evaluator=evaluator, rounds=cfg.rounds,
                   tolerance=cfg.tolerance, seed=seed, emit=emit, resolved=resolved,
-                  free_ends=(i == 0, last))
+                  free_ends=(i == 0, last), asked=asked_of(seg) if source.persons == 1 else None)
     applied = [e for e in out.corrections if e["score_after"] is not None]
     redrawn = [c for c, e in zip(calls, applied) if e["accepted"] and c is not None]
     if redrawn:

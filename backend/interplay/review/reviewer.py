@@ -32,6 +32,7 @@ from interplay.motion.captions import PARTS, summarise
 from interplay.motion.pair.resolve import resolve_pair
 from interplay.motion.posecodes import caption_clip
 from interplay.planner.schema import Segment
+from interplay.review import asked as asked_checks
 from interplay.review.agreement import BODY_CUES, caption_agreement, confirms
 from interplay.review.checks import Checks, commonsense, contact_mode, worse
 from interplay.review.evaluator import Evaluator
@@ -96,10 +97,13 @@ def _texts(seg: Segment, persons: int) -> list[str]:
 
 
 def review(seg: Segment, joints, evaluator: Evaluator | None = None,
-           encoder: Encoder | None = None, round: int = 0, resolved: bool = False) -> Review:
+           encoder: Encoder | None = None, round: int = 0, resolved: bool = False,
+           asked: list[dict] | None = None) -> Review:
     """Review one planned segment: `joints` one (T, 22, 3) array per person for the segment's
     frames (T ≥ 3). `resolved`: the penetration resolution has already run on these frames
-    (then a pair still over the bound is re-generated rather than resolved again)."""
+    (then a pair still over the bound is re-generated rather than resolved again). `asked`:
+    the benchmark's checks the segment's words imply (`review.asked`); one it misses fails the
+    segment and asks for it again."""
     people = [np.asarray(p, dtype=np.float64) for p in joints]
     if not people or any(p.ndim != 3 or p.shape[1:] != (sk.NUM_JOINTS, 3) for p in people):
         raise ValueError(f"joints must be one (T, 22, 3) array per person, got "
@@ -135,6 +139,9 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
         if any(re.search(p, text.lower()) for p, _ in BODY_CUES):
             body_ok = body_ok or confirms(text, bodies, BODY_CUES)[0]
     checks: Checks = commonsense(people, seg.prompt)
+    missed = asked_checks.missed(people, asked)
+    for name, why in missed:
+        checks.failed[f"asked_{name}"] = why
     regenerate = None
     if body_ok is False:
         regenerate = (f"the plan says '{base}', the body caption says "
@@ -145,6 +152,8 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
         regenerate = checks.failed["missing_contact"]
     elif "interpenetration" in checks.failed and resolved:
         regenerate = checks.failed["interpenetration"] + ", after the resolution"
+    elif missed:
+        regenerate = "the motion does not do what was asked: " + "; ".join(w for _, w in missed)
     if regenerate:
         instructions = [{"kind": "regenerate", "prompt": seg.prompt, "reason": regenerate}]
     else:
@@ -210,7 +219,8 @@ def _better(before: dict, after: dict) -> bool:
 def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None = None,
             rounds: int = 2, tolerance: float = 0.1, seed: int = 0, encoder: Encoder | None = None,
             emit: Callable[[dict], None] | None = None, resolved: bool = False,
-            free_ends: tuple[bool, bool] = (True, True)) -> Corrected:
+            free_ends: tuple[bool, bool] = (True, True), asked: list[dict] | None = None
+            ) -> Corrected:
     """Algorithm 1's self-correction loop on one segment: review, run the instructions through
     `apply`, at most `rounds` rounds. A correction is kept only if the score does not drop and
     no watched metric gets worse beyond `tolerance`; otherwise the previous motion is kept and
@@ -219,12 +229,14 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
     Two people: `resolve_penetration` is run here (`resolve_people`, the segment's edges free
     or eased as `free_ends` says) and kept when it meets the penetration bound or lowers it
     (bones cannot change: rigid moves and IK); whatever `apply` returns for two people is
-    resolved before it is reviewed. `resolved`: the frames given were resolved already."""
+    resolved before it is reviewed. `resolved`: the frames given were resolved already.
+    `asked` (`review.asked`): a correction that passes more of these checks is kept unless it
+    makes a watched metric worse; one that passes fewer is rejected."""
     if rounds < 0:
         raise ValueError(f"rounds must be ≥ 0, got {rounds}")
     emit = emit or (lambda e: None)
     people = [np.asarray(p, dtype=np.float64) for p in joints]
-    current = review(seg, people, evaluator, encoder, round=0, resolved=resolved)
+    current = review(seg, people, evaluator, encoder, round=0, resolved=resolved, asked=asked)
     emit(current.event())
     reviews, corrections, stop = [current], [], False
     rng = np.random.default_rng([seed % 2**63, seg.index])
@@ -250,7 +262,8 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 emit(event)
                 continue
             two = len(candidate) == 2
-            after = review(seg, candidate, evaluator, encoder, round=r, resolved=resolved or two)
+            after = review(seg, candidate, evaluator, encoder, round=r, resolved=resolved or two,
+                           asked=asked)
             event["score_after"] = after.score
             if report is not None:
                 # a physical fix: kept when the bound is met or lower, whatever the text score
@@ -258,10 +271,13 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 event["reason"] = resolution_words(report)
             else:
                 worse_keys = worse(current.metrics, after.metrics, tolerance)
-                ok = after.score + SCORE_EPS >= current.score and not worse_keys
+                gain = asked_checks.passed(candidate, asked) - asked_checks.passed(people, asked)
+                ok = not worse_keys and (gain > 0 or gain == 0
+                                         and after.score + SCORE_EPS >= current.score)
                 if not ok:
-                    event["reason"] = ("the score dropped" if after.score + SCORE_EPS < current.score
-                                       else f"worse {', '.join(worse_keys)}")
+                    event["reason"] = (f"worse {', '.join(worse_keys)}" if worse_keys else
+                                       f"it misses {-gain} more of what was asked" if gain < 0
+                                       else "the score dropped")
             if ok:
                 event["accepted"] = True
                 people = [np.asarray(p, np.float64) for p in candidate]
@@ -274,7 +290,7 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 break
         if not changed:
             break
-        current = review(seg, people, evaluator, encoder, round=r, resolved=resolved)
+        current = review(seg, people, evaluator, encoder, round=r, resolved=resolved, asked=asked)
         emit(current.event())
         reviews.append(current)
     return Corrected(people=people, reviews=reviews, corrections=corrections)
