@@ -33,6 +33,9 @@ ASKED = [
     ("sit down on the ground", 6, [{"check": "posture_at_end", "posture": "sitting"}], "standing"),
     ("sit down, then stand back up", 8, [{"check": "sequence", "steps": ["sit", "stand"]},
                                          {"check": "posture_at_end", "posture": "standing"}], "standing"),
+    ("shuffle along like a tired old man", 6, [{"check": "speed_band", "band": "slow"}], "any"),
+    ("jog forward", 6, [{"check": "speed_band", "band": "jog"}], "any"),
+    ("sprint as fast as you can", 5, [{"check": "speed_band", "band": "sprint"}], "any"),
     ("lie down, then sit up", 9, [{"check": "sequence", "steps": ["lie", "sit"]},
                                   {"check": "posture_at_end", "posture": "sitting"}], "standing"),
 ]
@@ -55,6 +58,12 @@ def test_the_motion_does_what_the_prompt_asks(gen, prompt, seconds, checks, star
         if start != "any":      # it starts where it is asked to (standing unless said)
             first = next(p for p in plausibility([joints], start=start) if p.check.startswith("starts_"))
             assert first.passed, (seed, first)
+
+
+def test_a_sprint_says_how_fast_the_captures_go(gen):
+    m = gen.generate(Request("sprint as fast as you can", 1, 5.0, seed=0))
+    assert any(r.startswith("speed: segment 0 asks for a sprint") and "4 m/s" in r
+               for r in m.plan["reasons"])
 
 
 def test_backwards_keeps_facing_forward(gen):

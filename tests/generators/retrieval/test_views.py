@@ -75,7 +75,7 @@ def test_a_plan_naming_views_streams_the_same_after_json(gen):
     ("jump three times", 6, Intent(action="jump", count=3)),
     ("take three steps forward", 5, Intent(action="step", count=3)),
     ("squat twice", 6, Intent(action="squat", count=2)),
-    ("run backwards", 5, Intent(travel="backward")),
+    ("run backwards", 5, Intent(travel="backward", speed="run")),
     ("step sideways to the left", 5, Intent(travel="left")),
     ("get up from lying on the floor", 6, Intent(start="lying", end="standing", rises=True)),
     ("stand up from sitting on the floor", 6, Intent(start="sitting", end="standing", rises=True)),

@@ -30,7 +30,7 @@ from interplay.generators.plan import (
     Source,
 )
 from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.retrieval.intent import intent
+from interplay.generators.retrieval.intent import FASTEST_M_S, intent, speed_of
 from interplay.generators.retrieval.stitch import Stitcher
 from interplay.generators.retrieval.tracks import single_track
 from interplay.motion.motion import Motion
@@ -126,6 +126,10 @@ class RetrievalGenerator:
                                           _rng(seed, seg.index), after, seg.roles,
                                           seg.repeat, seg.travel)
             after = _ends(seg.retrieval)
+            if req.persons == 1 and speed_of(seg.prompt) == "sprint":
+                plan.reasons.append(f"speed: segment {seg.index} asks for a sprint; the fastest "
+                                    f"captured runs reach about {FASTEST_M_S:g} m/s, so it is "
+                                    "played at that speed, no faster")
         self._summarise(plan)
         return plan
 

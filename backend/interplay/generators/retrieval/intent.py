@@ -32,6 +32,7 @@ class Intent:
     start: str | None = None    # the posture it starts in (None: standing, or where it is)
     end: str | None = None      # the posture it ends in and holds (None: no posture asked)
     rises: bool = False         # it gets up (from wherever the previous segment left it)
+    speed: str | None = None    # slow / jog / run / sprint: the speed band travel must land in
 
     @property
     def plain(self) -> bool:
@@ -70,6 +71,31 @@ _ENDS = [(r"\bsits?\s+up\b|\bsitting\s+up\b", "sitting"),
          (r"\b(?:sits?|sitting|sat)\b(?!\s+up)|\btakes?\s+a\s+seat\b", "sitting"),
          (r"\b(?:lies|lie|lying|lays?|laying)\s+(?:down|on)\b|\blies\b", "lying"),
          (r"\bkneel\w*\b|\bon\s+(?:one|both|his|her|their)\s+knees?\b", "kneeling")]
+
+
+_SPRINT = re.compile(r"\bsprint\w*|\bdash\w*|\bas\s+fast\s+as\b|\bfull\s+speed\b|\bflat\s+out\b")
+_JOG = re.compile(r"\bjog\w*")
+_RUN = re.compile(r"\b(?:run|runs|running|ran)\b(?!\s+(?:into|over|out|up|through)\b)")
+_SLOW = re.compile(r"\bslow\w*|\bstroll\w*|\bshuffl\w*|\btired\w*|\bdrag\w*|\bsneak\w*|"
+                   r"\btiptoe\w*|\bleisurely\b|\bexhausted\b")
+_GOES = re.compile(r"\b(?:walk\w*|shuffl\w*|stroll\w*|mov\w*|amble\w*|sneak\w*|tiptoe\w*|"
+                   r"plod\w*|trudg\w*|limp\w*)\b")
+FASTEST_M_S = 4.0        # about the fastest captured runs (CMU, Bandai Namco dashes)
+
+
+def speed_of(prompt: str) -> str | None:
+    """The speed band travel is asked in: sprint (sprint, dash, as fast as …), jog, run ("run
+    slowly" jogs), slow (a slow, tired or sneaking walk); None when no speed is said."""
+    t = prompt.lower()
+    if _SPRINT.search(t):
+        return "sprint"
+    if _JOG.search(t) or _RUN.search(t) and _SLOW.search(t):
+        return "jog"
+    if _RUN.search(t):
+        return "run"
+    if _SLOW.search(t) and _GOES.search(t):
+        return "slow"
+    return None
 
 
 def travel_of(prompt: str) -> str | None:
@@ -147,4 +173,4 @@ def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
     if action == "step" and count is None:
         action = None                      # "steps sideways": travel, not a count of steps
     return Intent(travel=go, side=side_of(prompt), action=action, count=count,
-                  start=start, end=end, rises=rises)
+                  start=start, end=end, rises=rises, speed=speed_of(prompt))

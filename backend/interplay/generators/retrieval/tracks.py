@@ -69,6 +69,6 @@ def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.G
         short = index.narrow(cands, rng, wide) if cands else []
         if short:
             draw = lambda: index.chain(short, frames, rng, [0], after)  # noqa: E731
-    if draw is None:
-        return plain()
+    if draw is None:       # nothing narrower to draw from: text draws, checked (a speed band)
+        return verify.pick(index, plain, frames, specs) or plain() if specs else plain()
     return verify.pick(index, draw, frames, specs) or plain()

@@ -50,6 +50,8 @@ def checks(intent: Intent, start: str | None = None, end: str | None = None,
         out.append({"check": COUNT_CHECKS[a], "count": n})
     elif a == "step" and n is not None:
         out.append({"check": "step_count", "count": n, "tolerance": 0})
+    if intent.speed is not None and intent.action is None and end not in LOW:
+        out.append({"check": "speed_band", "band": intent.speed})
     if start is not None and (start in LOW or end in LOW):
         out.append({"check": "posture_at_start", "posture": start})
     elif first and start in (None, "standing"):
