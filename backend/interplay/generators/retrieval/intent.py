@@ -33,6 +33,7 @@ class Intent:
     end: str | None = None      # the posture it ends in and holds (None: no posture asked)
     rises: bool = False         # it gets up (from wherever the previous segment left it)
     speed: str | None = None    # slow / jog / run / sprint: the speed band travel must land in
+    turn: tuple[int, str] | None = None   # (degrees, left / right / any) the facing must turn
 
     @property
     def plain(self) -> bool:
@@ -96,6 +97,28 @@ def speed_of(prompt: str) -> str | None:
     if _SLOW.search(t) and _GOES.search(t):
         return "slow"
     return None
+
+
+_SPIN = re.compile(r"\bspin\w*|\bpirouett\w*|\btwirl\w*")
+_AROUND = re.compile(r"\bturn\w*\s+(?:all\s+the\s+way\s+)?a?round\b|\babout[- ]face\b|"
+                     r"\bturn\w*\s+back\b")
+_TURN_SIDE = re.compile(r"\bturn\w*\s+(?:to\s+(?:the|his|her|their)\s+)?(left|right)\b")
+
+
+def turn_of(prompt: str, repeat: int = 1) -> tuple[int, str] | None:
+    """(degrees, direction) the body is asked to turn: a spin 360° a time ("spins twice":
+    720°), "turns around" 180°, "turns left" 90° to the left; None when no turn is said."""
+    t = prompt.lower()
+    if _SPIN.search(t):
+        m = _TIMES.search(t)
+        n = repeat if repeat > 1 else ({"twice": 2, "thrice": 3}.get(m.group(1) or "", 0) or
+                                       (int(m.group(2)) if m and m.group(2) and m.group(2).isdigit()
+                                        else _NUMBERS.get(m.group(2) or "", 1)) if m else 1)
+        return 360 * n, "any"
+    if _AROUND.search(t):
+        return 180, "any"
+    m = _TURN_SIDE.search(t)
+    return (90, m.group(1)) if m else None
 
 
 def travel_of(prompt: str) -> str | None:
@@ -173,4 +196,5 @@ def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
     if action == "step" and count is None:
         action = None                      # "steps sideways": travel, not a count of steps
     return Intent(travel=go, side=side_of(prompt), action=action, count=count,
-                  start=start, end=end, rises=rises, speed=speed_of(prompt))
+                  start=start, end=end, rises=rises, speed=speed_of(prompt),
+                  turn=turn_of(prompt, repeat) if action is None else None)

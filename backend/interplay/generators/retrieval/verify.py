@@ -50,6 +50,10 @@ def checks(intent: Intent, start: str | None = None, end: str | None = None,
         out.append({"check": COUNT_CHECKS[a], "count": n})
     elif a == "step" and n is not None:
         out.append({"check": "step_count", "count": n, "tolerance": 0})
+    if intent.turn is not None:
+        deg, way = intent.turn
+        out.append({"check": "turn", "degrees": deg, "direction": way,
+                    "tolerance": 45 if deg <= 180 else 60 if deg <= 360 else 90})
     if intent.speed is not None and intent.action is None and end not in LOW:
         out.append({"check": "speed_band", "band": intent.speed})
     if start is not None and (start in LOW or end in LOW):
