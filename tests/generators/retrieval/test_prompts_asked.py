@@ -37,6 +37,8 @@ ASKED = [
     ("jog forward", 6, [{"check": "speed_band", "band": "jog"}], "any"),
     ("sprint as fast as you can", 5, [{"check": "speed_band", "band": "sprint"}], "any"),
     ("turn to the left", 4, [{"check": "turn", "degrees": 90, "direction": "left"}], "standing"),
+    ("walk forward, then stop and stand still", 7, [{"check": "sequence", "steps": ["walk", "stop"]}],
+     "standing"),
     ("lie down, then sit up", 9, [{"check": "sequence", "steps": ["lie", "sit"]},
                                   {"check": "posture_at_end", "posture": "sitting"}], "standing"),
 ]

@@ -34,6 +34,7 @@ class Intent:
     rises: bool = False         # it gets up (from wherever the previous segment left it)
     speed: str | None = None    # slow / jog / run / sprint: the speed band travel must land in
     turn: tuple[int, str] | None = None   # (degrees, left / right / any) the facing must turn
+    still: bool = False         # it stops and stands still (the pelvis stays within a step)
 
     @property
     def plain(self) -> bool:
@@ -121,6 +122,16 @@ def turn_of(prompt: str, repeat: int = 1) -> tuple[int, str] | None:
     return (90, m.group(1)) if m else None
 
 
+_STILL = re.compile(r"\bstands?\s+still\b|\bstops?\b(?!\s+\w+ing\s+(?:the|a|his|her)\b)|"
+                    r"\bhalts?\b|\bcomes?\s+to\s+a\s+(?:stop|halt)\b")
+
+
+def still_of(prompt: str) -> bool:
+    """Does the segment stop and stand ("stops walking and stands still", "halts")?"""
+    t = prompt.lower()
+    return bool(_STILL.search(t)) and not re.search(r"\bthen\b|\bstarts?\b|\bagain\b", t)
+
+
 def travel_of(prompt: str) -> str | None:
     """backward / left / right / sideways (either side) when the prompt asks to move that way
     relative to where the body faces ("walks backwards", "steps sideways to the left"); None
@@ -197,4 +208,5 @@ def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
         action = None                      # "steps sideways": travel, not a count of steps
     return Intent(travel=go, side=side_of(prompt), action=action, count=count,
                   start=start, end=end, rises=rises, speed=speed_of(prompt),
-                  turn=turn_of(prompt, repeat) if action is None else None)
+                  turn=turn_of(prompt, repeat) if action is None else None,
+                  still=still_of(prompt) and action is None and go is None)

@@ -27,6 +27,8 @@ from interplay.generators.retrieval import counts, postures, verify
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieval.intent import LOW, Intent
 
+STANDING = "a person stands still"
+
 
 def start_end(index: RetrievalIndex, intent: Intent, after: dict | None
              ) -> tuple[str | None, str | None]:
@@ -69,6 +71,9 @@ def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.G
         short = index.narrow(cands, rng, wide) if cands else []
         if short:
             draw = lambda: index.chain(short, frames, rng, [0], after)  # noqa: E731
+    if draw is None and intent.still:   # "stops walking and stands still": the nearest
+        # captures of those words still walk; standing ones, from where the last one ended
+        draw = lambda: index.track(STANDING, frames, rng, after=after)  # noqa: E731
     if draw is None:       # nothing narrower to draw from: text draws, checked (a speed band)
         return verify.pick(index, plain, frames, specs) or plain() if specs else plain()
     return verify.pick(index, draw, frames, specs) or plain()

@@ -19,6 +19,7 @@ from interplay.motion.checks.measures import frame_of
 from interplay.motion.checks.named import CHECKS
 
 COUNT_CHECKS = {"jump": "jump_count", "squat": "squat_count"}
+STOP_M = 1.0       # a stop may take a step or two to come to rest
 
 
 def render(index, track: list[dict], frames: int) -> np.ndarray:
@@ -50,6 +51,8 @@ def checks(intent: Intent, start: str | None = None, end: str | None = None,
         out.append({"check": COUNT_CHECKS[a], "count": n})
     elif a == "step" and n is not None:
         out.append({"check": "step_count", "count": n, "tolerance": 0})
+    if intent.still:
+        out.append({"check": "stays_in_place", "max_m": STOP_M})
     if intent.turn is not None:
         deg, way = intent.turn
         out.append({"check": "turn", "degrees": deg, "direction": way,
