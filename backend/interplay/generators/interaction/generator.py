@@ -47,6 +47,7 @@ BUILDERS = {
     "push": touches.push, "wave": gestures.wave, "wave_back": gestures.wave_back,
     "bow": gestures.bow, "mirror": gestures.mirror, "follow": travel.follow,
     "one_stops": travel.one_stops, "side_by_side": travel.side_by_side, "approach": travel.approach,
+    "together": gestures.together,
 }
 FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)
 
@@ -143,7 +144,8 @@ class InteractionGenerator:
         best: tuple | None = None
         errors = []
         for attempt in range(ATTEMPTS):
-            cast = Cast(rng, self.library, script, frames, _texts(req.prompt, roles))
+            cast = Cast(rng, self.library, script, frames, _texts(req.prompt, roles),
+                        solo=lambda text, s: self._solo(text, req.seconds, s))
             try:
                 people = finish(BUILDERS[script.kind](cast))
             except ValueError as exc:
@@ -167,6 +169,13 @@ class InteractionGenerator:
             "plausibility": {"failed": failed, "contact_asked": contact},
         })
         return [p.astype(np.float32) for p in people], composition
+
+    def _solo(self, text: str, seconds: float, seed: int) -> tuple[np.ndarray, list[dict]]:
+        """One person's motion for `text` by the generator that serves one person, and the
+        clips it is made of."""
+        m = generate_motion(self.retrieval, Request(text, 1, seconds, seed))
+        return np.asarray(m.people[0]), [{"clip": s["clip"], "licence": s["licence"]}
+                                         for s in m.plan.get("sources", [])]
 
     def _remember(self, req: Request, seed: int, script: dict, people: list[np.ndarray]) -> None:
         key = (req.prompt, float(req.seconds), seed, repr(sorted(script.items())))

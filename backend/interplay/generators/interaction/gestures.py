@@ -8,10 +8,12 @@ quiet start and end (`bodies.extend`). The mirror is the leader's clip reflected
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
-from interplay.generators.interaction.bodies import extend, facing_pair, on_shared
-from interplay.generators.interaction.scene import Cast
+from interplay.generators.interaction.bodies import extend, facing_pair, on_shared, refit, turn_to
+from interplay.generators.interaction.scene import Cast, clear
 from interplay.motion.checks import measures as m
 from interplay.motion.clip import Clip
 from interplay.motion.pair.bases import face_forward
@@ -19,6 +21,19 @@ from interplay.motion.pair.windows import mirror as mirrored
 from interplay.motion.skeleton import FPS
 
 MIRROR_LAG = 1         # frame (0.05 s) the mirroring person trails the leader
+TOGETHER_GAP_M = (1.0, 1.3)   # side by side, pelvis to pelvis, both doing the same action
+TOGETHER_LAG = 2              # frames the second trails the first when both play one clip
+_WHO = re.compile(r"\b(?:two|the two|both|a pair of|a couple of)\s+(?:of\s+them\s+)?"
+                  r"(?:people|persons|friends|men|women|kids|children|dancers|athletes)?\b|"
+                  r"\bboth\s+of\s+them\b|\bthey\b|\bboth\b", re.I)
+_TOGETHER = re.compile(r"\s*\b(?:together|at the same time|in unison|in sync\w*|"
+                       r"simultaneously|side by side|next to each other)\b", re.I)
+
+
+def solo_text(text: str) -> str:
+    """One person's part of "two people jump together": "jump" (the planner's imperative)."""
+    t = _TOGETHER.sub("", _WHO.sub("", text, count=1))
+    return re.sub(r"\s+", " ", t).strip(" ,.") or text
 
 
 def _clip(c: Cast, person: int, family: str) -> tuple[Clip, np.ndarray]:
@@ -106,3 +121,62 @@ def mirror(c: Cast) -> list[np.ndarray]:
     c.sources[1 - lead].append({**c.sources[lead][-1], "mirrored": True, "use": "mirror image"})
     c.report["mirror"] = {"leader": lead, "lag_frames": MIRROR_LAG, "distance_m": round(dist, 3)}
     return [a, b]
+
+
+def together(c: Cast) -> list[np.ndarray]:
+    """Both do what one person would for the words ("two people jump together"): each made
+    by the one-person generator (`Cast.solo`, another seed each), both starting at once, side
+    by side facing the same way a metre or so apart, moved apart where the bodies would meet."""
+    if c.solo is None:
+        raise ValueError("no one-person generator to play each person's part")
+    text = solo_text(c.texts[0])
+    seed = int(c.rng.integers(2**31))
+    people = []
+    for person in (0, 1):
+        joints, sources = c.solo(solo_text(c.texts[person]) if c.texts[person] != c.texts[0] else text,
+                                 seed + 7919 * person)
+        j = refit(np.asarray(joints, np.float64)[:c.frames])
+        people.append(turn_to(j, 0.0, np.zeros(2), 0, current=None))
+        for src in sources:
+            c.source(person, {**src, "mirrored": False}, "together")
+    counts = [_counted(p) for p in people]
+    synced = counts[0] != counts[1]
+    shift = 0
+    if not synced:     # the same actions: the second's first one moved onto the first's
+        onsets = [_onset(p) for p in people]
+        if None not in onsets:
+            shift = int(np.clip(onsets[0] - onsets[1], -FPS, FPS))      # type: ignore[operator]
+            people[1] = _shifted(people[1], shift)
+    if synced:     # a different number of jumps or squats is not together: the same, a beat later
+        people[1] = np.concatenate([np.repeat(people[0][:1], TOGETHER_LAG, 0),
+                                    people[0][:len(people[0]) - TOGETHER_LAG]])
+        c.sources[1] = [{**s, "use": "together (the other's clip, a beat later)"} for s in c.sources[0]]
+    gap = float(c.rng.uniform(*TOGETHER_GAP_M))
+    a, b = people[0], people[1] + np.array([gap, 0.0, 0.0])
+    b, moved = clear(a, b)
+    c.report["together"] = {"text": text, "gap_m": round(gap + moved, 3), "seed": seed,
+                            "counts": counts, "same_clip": synced, "shift_frames": shift}
+    return [a, b]
+
+
+def _counted(joints: np.ndarray) -> tuple[int, int, int]:
+    """(jumps, squats, kicks) in a motion: what two people doing it together must agree on."""
+    b = m.frame_of(joints)
+    return len(m.jumps(b)), len(m.squats(b)), sum(len(m.kicks(b, side)) for side in m.SIDES)
+
+
+def _onset(joints: np.ndarray) -> int | None:
+    """The frame of a motion's first jump, squat or kick (None: none)."""
+    b = m.frame_of(joints)
+    at = [(s + e) // 2 for s, e in m.jumps(b)] + [mid for _, mid, _ in m.squats(b)] + \
+        [f for side in m.SIDES for f, _ in m.kicks(b, side)]
+    return min(at) if at else None
+
+
+def _shifted(joints: np.ndarray, by: int) -> np.ndarray:
+    """The motion `by` frames later (earlier when negative), its ends held to the same length."""
+    if by > 0:
+        return np.concatenate([np.repeat(joints[:1], by, 0), joints[:len(joints) - by]])
+    if by < 0:
+        return np.concatenate([joints[-by:], np.repeat(joints[-1:], -by, 0)])
+    return joints

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 KINDS = ("handshake", "high_five", "hug", "push", "wave", "wave_back", "bow", "mirror",
-         "follow", "one_stops", "side_by_side", "approach")
+         "follow", "one_stops", "side_by_side", "approach", "together")
 CONTACT = ("handshake", "high_five", "hug", "push")     # kinds where the two touch
 APPROACHABLE = ("handshake", "high_five", "hug", "approach")
 
@@ -36,7 +36,12 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     ("side_by_side", r"\bside by side\b|\bnext to each other\b|\bbeside each other\b|"
                      r"\balongside\b|\bhand in hand\b|\bhold\w* hands\b|\bwalk\w* together\b"),
     ("approach", r"\b(towards?|up to) each other\b|\bapproach\w*|\bmeet\b"),
+    # both do one person's action side by side ("two people jump together"); not a couple's
+    # dance or a fight, which are one motion of two people
+    ("together", r"\btogether\b|\bat the same time\b|\bin unison\b|\bin sync\w*|"
+                 r"\bsimultaneous\w*|\bboth (of them )?\w+s?\b"),
 )
+_NOT_TOGETHER = r"\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*|\bwrestl\w*"
 # Prompts this generator leaves to another (checked before the encoder's guess).
 _NOT_MINE = r"\bpush[\s-]?ups?\b|\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bjump\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*"
 _HELD = r"\bhand in hand\b|\bhold\w* hands\b|\bholding each other'?s? hands?\b"
@@ -56,7 +61,7 @@ _PROTOTYPES: tuple[tuple[str | None, str], ...] = (
     ("one_stops", "two people walk side by side, then one stops"),
     ("side_by_side", "two people walk side by side"), ("side_by_side", "two people stroll beside one another"),
     ("approach", "two people walk towards each other"),
-    (None, "two people dance together"), (None, "two people jump together"),
+    (None, "two people dance together"),
     (None, "two people fight"), (None, "two people play a game"), (None, "two people sit down"),
     (None, "two people salute each other"), (None, "two people exercise"), (None, "two people clap"),
 )
@@ -94,7 +99,7 @@ def keyword_kind(prompt: str) -> tuple[str | None, str]:
     """(kind, reason) by keywords, or (None, why not)."""
     for kind, pattern in _PATTERNS:
         word = _match(pattern, prompt)
-        if word:
+        if word and not (kind == "together" and _match(_NOT_TOGETHER, prompt)):
             return kind, f"'{word}' in the prompt: {kind}"
     word = _match(_NOT_MINE, prompt)
     if word:

@@ -7,6 +7,7 @@ frame 0). numpy only.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -30,6 +31,9 @@ class Cast:
     texts: list[str]                       # what each person does (their role, else the prompt)
     report: dict = field(default_factory=dict)
     sources: list[list[dict]] = field(default_factory=lambda: [[], []])
+    # one person's motion for a text and seed ((frames, 22, 3), its plan's sources): what
+    # "together" plays for each of the two
+    solo: Callable[[str, int], tuple[np.ndarray, list[dict]]] | None = None
 
     def source(self, person: int, src: dict, use: str) -> None:
         """Record a clip a person's motion is made of, and what for."""
