@@ -39,6 +39,7 @@ from interplay.generators.plan import GenerationPlan
 from interplay.generators.retrieval.generator import RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieve_edit.generator import RetrieveEditGenerator
+from interplay.generators.retrieve_edit.leg_edit import leg_edit
 from interplay.generators.retrieve_edit.part_edit import pose_edit
 from interplay.generators.spam.generator import SpamGenerator
 from interplay.generators.spam.runtime import DEFAULT_DIR as SPAM_DIR
@@ -113,7 +114,9 @@ class Router:
         """One person's joints with a part re-made from `prompt`: an arm pose the IK can hold
         (`retrieve_edit.part_edit`: raised, T-pose, crossed, on the hips, forward, a wave)
         by IK over the frames, which the edit benchmark measured holding where SPAM's
-        re-generation did not; anything else by SPAM's edit (`SpamGenerator.edit`)."""
+        re-generation did not; one leg's kick from a captured kick of that leg
+        (`retrieve_edit.leg_edit`: SPAM's edit gave no kick and moved the untouched joints
+        30–50 cm); anything else by SPAM's edit (`SpamGenerator.edit`)."""
         if isinstance(prompt, str) and prompt.strip():
             made = pose_edit(joints, part, prompt, frames)
             if made is not None:
@@ -124,6 +127,18 @@ class Router:
                 entry["seed"] = seed if seed is not None else random_seed()
                 return Edit(joints=out, parts=parts, frames=(int(span[0]), int(span[1])),
                             masked_tokens=0, steps=0,
+                            untouched_change_cm=entry["untouched_change_cm"],
+                            untouched_pose_change_cm=entry["untouched_change_cm"],
+                            model_untouched_change_cm=0.0), entry
+            seed = seed if seed is not None else random_seed()
+            kicked = leg_edit(joints, part, prompt, frames, self.retrieval, seed)
+            if kicked is not None:
+                out, entry = kicked
+                span = tuple(entry["frames"])
+                entry["parts"] = [sk.resolve_part(entry["leg"])]
+                entry["seed"] = seed
+                return Edit(joints=out, parts=(sk.resolve_part(entry["leg"]),),
+                            frames=(int(span[0]), int(span[1])), masked_tokens=0, steps=0,
                             untouched_change_cm=entry["untouched_change_cm"],
                             untouched_pose_change_cm=entry["untouched_change_cm"],
                             model_untouched_change_cm=0.0), entry
