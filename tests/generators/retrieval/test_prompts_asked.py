@@ -39,6 +39,7 @@ ASKED = [
     ("turn to the left", 4, [{"check": "turn", "degrees": 90, "direction": "left"}], "standing"),
     ("walk forward, then stop and stand still", 7, [{"check": "sequence", "steps": ["walk", "stop"]}],
      "standing"),
+    ("jump on the spot", 4, [{"check": "jump_count", "at_least": 1}, {"check": "stays_in_place"}], "standing"),
     ("lie down, then sit up", 9, [{"check": "sequence", "steps": ["lie", "sit"]},
                                   {"check": "posture_at_end", "posture": "sitting"}], "standing"),
 ]

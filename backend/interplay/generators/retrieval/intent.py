@@ -35,6 +35,7 @@ class Intent:
     speed: str | None = None    # slow / jog / run / sprint: the speed band travel must land in
     turn: tuple[int, str] | None = None   # (degrees, left / right / any) the facing must turn
     still: bool = False         # it stops and stands still (the pelvis stays within a step)
+    in_place: bool = False      # on the spot / in place: the pelvis stays within 0.6 m
 
     @property
     def plain(self) -> bool:
@@ -126,6 +127,10 @@ _STILL = re.compile(r"\bstands?\s+still\b|\bstops?\b(?!\s+\w+ing\s+(?:the|a|his|
                     r"\bhalts?\b|\bcomes?\s+to\s+a\s+(?:stop|halt)\b")
 
 
+_IN_PLACE = re.compile(r"\bon\s+the\s+spot\b|\bin\s+place\b|\bwithout\s+(?:moving|travell?ing)\b|"
+                       r"\bstationary\b")
+
+
 def still_of(prompt: str) -> bool:
     """Does the segment stop and stand ("stops walking and stands still", "halts")?"""
     t = prompt.lower()
@@ -209,4 +214,7 @@ def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
     return Intent(travel=go, side=side_of(prompt), action=action, count=count,
                   start=start, end=end, rises=rises, speed=speed_of(prompt),
                   turn=turn_of(prompt, repeat) if action is None else None,
-                  still=still_of(prompt) and action is None and go is None)
+                  still=still_of(prompt) and action is None and go is None,
+                  # an action on the spot (hops, jumps, kicks): a wider text draw kept only
+                  # for staying put plays clips of other actions that do
+                  in_place=bool(_IN_PLACE.search(prompt.lower())) and go is None and action is not None)

@@ -16,10 +16,12 @@ import numpy as np
 from interplay.generators.retrieval.intent import LOW, Intent
 from interplay.generators.retrieval.stitch import Stitcher
 from interplay.motion.checks.measures import frame_of
-from interplay.motion.checks.named import CHECKS
+from interplay.motion.checks.named import CHECKS, no_pops
 
 COUNT_CHECKS = {"jump": "jump_count", "squat": "squat_count"}
 STOP_M = 1.0       # a stop may take a step or two to come to rest
+IN_PLACE_M = 0.6   # on the spot: the benchmark's stays_in_place bound
+NO_POPS = {"check": "no_pops"}   # every checked draw must pass it too (see `passed`)
 
 
 def render(index, track: list[dict], frames: int) -> np.ndarray:
@@ -51,8 +53,8 @@ def checks(intent: Intent, start: str | None = None, end: str | None = None,
         out.append({"check": COUNT_CHECKS[a], "count": n})
     elif a == "step" and n is not None:
         out.append({"check": "step_count", "count": n, "tolerance": 0})
-    if intent.still:
-        out.append({"check": "stays_in_place", "max_m": STOP_M})
+    if intent.still or intent.in_place:
+        out.append({"check": "stays_in_place", "max_m": STOP_M if intent.still else IN_PLACE_M})
     if intent.turn is not None:
         deg, way = intent.turn
         out.append({"check": "turn", "degrees": deg, "direction": way,
@@ -69,9 +71,11 @@ def checks(intent: Intent, start: str | None = None, end: str | None = None,
 
 
 def passed(joints: np.ndarray, specs: list[dict]) -> int:
-    """How many of the checks the joints pass."""
+    """How many of the checks the joints pass (`NO_POPS`: the plausibility check of a jump
+    in the pelvis between frames)."""
     b = frame_of(joints)
-    return sum(bool(CHECKS[s["check"]].fn(b, **{k: v for k, v in s.items() if k != "check"})[0])
+    return sum(bool(no_pops(joints, b)[0] if s is NO_POPS else
+                    CHECKS[s["check"]].fn(b, **{k: v for k, v in s.items() if k != "check"})[0])
                for s in specs)
 
 
@@ -80,6 +84,7 @@ def pick(index, draws: Callable[[], list[dict] | None], frames: int, specs: list
     """The first of up to `tries` draws whose stitched frames pass every check, else the
     draw that passed most (the earliest among equals); None when nothing could be drawn."""
     best, best_n = None, -1
+    specs = [*specs, NO_POPS] if specs else specs     # a draw that passes pops nowhere
     for _ in range(tries):
         track = draws()
         if track is None:
