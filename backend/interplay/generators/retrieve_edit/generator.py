@@ -5,7 +5,8 @@ laid over them:
 1. the plan's arm actions (held poses, a raised hand, a wave while walking, `actions`), by IK
    on the performer's bones over the segment's frames, eased in and out at its borders
    (`arm_poses`); the legs, pelvis and untouched arm stay exactly as captured;
-2. knees lifted high in every step where the plan asks for it (`leg_lifts`);
+2. knees lifted high in every step where the plan asks for it (`leg_lifts`); a last segment
+   asked to go slowly played slower where its captures go faster than a slow walk (`pace`);
 3. the whole motion put on the floor where it carries weight (`ground.on_floor`).
 
 Every choice is written into the plan: the captures per segment (as retrieval's), and per
@@ -30,10 +31,12 @@ from interplay.generators.base import Request, generate_motion
 from interplay.generators.plan import GenerationPlan, GenerationSegment, GeneratorName
 from interplay.generators.retrieval.generator import CHUNK, RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
+from interplay.generators.retrieval.intent import speed_of
 from interplay.generators.retrieve_edit.actions import arm_actions, knee_lifts
 from interplay.generators.retrieve_edit.arm_poses import ArmAction, apply
 from interplay.generators.retrieve_edit.ground import on_floor
 from interplay.generators.retrieve_edit.leg_lifts import lift_knees
+from interplay.generators.retrieve_edit.pace import SLOW_MAX_M_S, slow_down
 from interplay.motion.motion import Motion
 
 NAME: GeneratorName = "retrieve_edit"
@@ -80,6 +83,10 @@ class RetrieveEditGenerator:
         plan = self.retrieval.plan(req)
         plan.generator = NAME
         _, reasons = _actions(plan)
+        last = plan.segments[-1]
+        if plan.persons == 1 and speed_of(last.prompt) == "slow":
+            reasons.append(f"segment {last.index}: played slower where its captures travel faster "
+                           f"than {SLOW_MAX_M_S:g} m/s (a slow walk, `pace.slow_down`)")
         plan.generator_reason = "; ".join(
             ["real captured clips per segment, arm actions laid over them by IK, feet put on "
              "the floor"] + reasons)
@@ -97,6 +104,9 @@ class RetrieveEditGenerator:
             legs, _ = knee_lifts(seg)
             if legs:
                 people[0] = lift_knees(people[0], legs, seg.start, seg.end)
+        last = plan.segments[-1]
+        if plan.persons == 1 and speed_of(last.prompt) == "slow":
+            people[0][last.start:last.end] = slow_down(people[0][last.start:last.end])[0]
         acts, _ = _actions(plan)
         if acts:
             people[0] = apply(people[0], acts)
