@@ -15,11 +15,11 @@ async function stored(request: APIRequestContext, body: Record<string, unknown>)
 }
 
 async function findSeed(request: APIRequestContext, prompt: string, want: (m: Stored) => boolean): Promise<Stored> {
-  for (let seed = 1; seed <= 12; seed++) {
+  for (let seed = 1; seed <= 24; seed++) {
     const m = await stored(request, { prompt, seconds: 3, seed });
     if (want(m)) return m;
   }
-  throw new Error(`no seed in 1…12 gives the wanted review for "${prompt}"`);
+  throw new Error(`no seed in 1…24 gives the wanted review for "${prompt}"`);
 }
 
 const corrected = (m: Stored) => {
@@ -32,7 +32,9 @@ const failed = (m: Stored) => {
 };
 
 test("a corrected segment's outcome is shown in words, live and from the stored review", async ({ page, request }, info) => {
-  const prompt = "a person raises both arms above the head";
+  // four hops asked: a draw with fewer fails the benchmark's count, and a re-draw that hops
+  // four times is kept (captured arm raises pass their review at once)
+  const prompt = "a person hops four times";
   const m = await findSeed(request, prompt, corrected);
   info.annotations.push({ type: "seed", description: `${prompt}: seed ${m.seed} is corrected` });
 
