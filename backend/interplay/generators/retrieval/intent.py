@@ -79,7 +79,7 @@ _ENDS = [(r"\bsits?\s+up\b|\bsitting\s+up\b", "sitting"),
 _SPRINT = re.compile(r"\bsprint\w*|\bdash\w*|\bas\s+fast\s+as\b|\bfull\s+speed\b|\bflat\s+out\b")
 _JOG = re.compile(r"\bjog\w*")
 _RUN = re.compile(r"\b(?:run|runs|running|ran)\b(?!\s+(?:into|over|out|up|through)\b)")
-_SLOW = re.compile(r"\bslow\w*|\bstroll\w*|\bshuffl\w*|\btired\w*|\bdrag\w*|\bsneak\w*|"
+_SLOW = re.compile(r"\bslow(?!s?\s+down|ing\s+down|ed\s+down)\w*|\bstroll\w*|\bshuffl\w*|\btired\w*|\bdrag\w*|\bsneak\w*|"
                    r"\btiptoe\w*|\bleisurely\b|\bexhausted\b")
 _GOES = re.compile(r"\b(?:walk\w*|shuffl\w*|stroll\w*|mov\w*|amble\w*|sneak\w*|tiptoe\w*|"
                    r"plod\w*|trudg\w*|limp\w*)\b")
