@@ -128,12 +128,25 @@ def fid_embedding(train: PairSet):
 
 
 # -- rows ------------------------------------------------------------------------------------
+_INDEX: dict[int, tuple] = {}
+
+
+def _train_index(clips):
+    """The retrieval index over the train split of `clips`, built once for every row that
+    draws from it (the text embeddings are the costly part)."""
+    if id(clips) not in _INDEX:
+        from interplay.generators.retrieval.index import RetrievalIndex
+        from interplay.text.encoder import get_encoder
+        _INDEX.clear()          # one clip list at a time; it is kept so its id stays its own
+        _INDEX[id(clips)] = (clips, RetrievalIndex([c for c in clips if c.split == "train"],
+                                                   get_encoder()))
+    return _INDEX[id(clips)][1]
+
+
 def _retrieval(clips) -> Generate:
     from interplay.generators.base import Request
     from interplay.generators.retrieval.generator import RetrievalGenerator
-    from interplay.generators.retrieval.index import RetrievalIndex
-    from interplay.text.encoder import get_encoder
-    gen = RetrievalGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+    gen = RetrievalGenerator(_train_index(clips))
 
     def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
         req = Request(prompt, persons=2, seconds=frames / sk.FPS, seed=seed)
@@ -149,9 +162,7 @@ def _stack(people, frames: int) -> np.ndarray:
 def _compose(clips) -> Generate:
     from interplay.generators.base import Request, generate_motion
     from interplay.generators.interaction.generator import InteractionGenerator
-    from interplay.generators.retrieval.index import RetrievalIndex
-    from interplay.text.encoder import get_encoder
-    gen = InteractionGenerator(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+    gen = InteractionGenerator(_train_index(clips))
 
     def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
         req = Request(prompt, persons=2, seconds=frames / sk.FPS, seed=seed)
@@ -163,11 +174,9 @@ def _default(clips) -> Generate:
     """The studio's path over the train split's clips (no models: two people need none; the
     review scores by caption agreement)."""
     from interplay.generators.base import Request
-    from interplay.generators.retrieval.index import RetrievalIndex
     from interplay.generators.router import Router
     from interplay.pipeline.orchestrator import orchestrate
-    from interplay.text.encoder import get_encoder
-    router = Router(RetrievalIndex([c for c in clips if c.split == "train"], get_encoder()))
+    router = Router(_train_index(clips))
 
     def generate(prompt: str, frames: int, seed: int) -> np.ndarray:
         req = Request(prompt, persons=2, seconds=frames / sk.FPS, seed=seed)

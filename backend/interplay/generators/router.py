@@ -118,30 +118,13 @@ class Router:
         (`retrieve_edit.leg_edit`: SPAM's edit gave no kick and moved the untouched joints
         30–50 cm); anything else by SPAM's edit (`SpamGenerator.edit`)."""
         if isinstance(prompt, str) and prompt.strip():
+            s = seed if seed is not None else random_seed()
             made = pose_edit(joints, part, prompt, frames)
             if made is not None:
-                out, entry = made
-                span = tuple(entry["frames"])
-                parts = tuple(sk.resolve_part(a) for a in entry["arms"])
-                entry["parts"] = list(parts)
-                entry["seed"] = seed if seed is not None else random_seed()
-                return Edit(joints=out, parts=parts, frames=(int(span[0]), int(span[1])),
-                            masked_tokens=0, steps=0,
-                            untouched_change_cm=entry["untouched_change_cm"],
-                            untouched_pose_change_cm=entry["untouched_change_cm"],
-                            model_untouched_change_cm=0.0), entry
-            seed = seed if seed is not None else random_seed()
-            kicked = leg_edit(joints, part, prompt, frames, self.retrieval, seed)
+                return _laid_edit(*made, limbs=made[1]["arms"], seed=s)
+            kicked = leg_edit(joints, part, prompt, frames, self.retrieval, s)
             if kicked is not None:
-                out, entry = kicked
-                span = tuple(entry["frames"])
-                entry["parts"] = [sk.resolve_part(entry["leg"])]
-                entry["seed"] = seed
-                return Edit(joints=out, parts=(sk.resolve_part(entry["leg"]),),
-                            frames=(int(span[0]), int(span[1])), masked_tokens=0, steps=0,
-                            untouched_change_cm=entry["untouched_change_cm"],
-                            untouched_pose_change_cm=entry["untouched_change_cm"],
-                            model_untouched_change_cm=0.0), entry
+                return _laid_edit(*kicked, limbs=[kicked[1]["leg"]], seed=s)
         if self._spam is None:
             raise EditUnavailable(f"this edit needs the SPAM model: {self.reason}" if self.reason
                                   else "this generator cannot edit motions")
@@ -149,6 +132,18 @@ class Router:
 
     def generate(self, req: Request) -> Motion:
         return generate_motion(self, req)
+
+
+def _laid_edit(out: np.ndarray, entry: dict, limbs: list[str], seed: int) -> tuple[Edit, dict]:
+    """An edit made by laying a pose or a captured kick over the limbs named (no tokens
+    decoded), as the `Edit` SPAM's edits return, and its plan entry."""
+    parts = tuple(sk.resolve_part(x) for x in limbs)
+    entry["parts"], entry["seed"] = list(parts), seed
+    a, b = entry["frames"]
+    return Edit(joints=out, parts=parts, frames=(int(a), int(b)), masked_tokens=0, steps=0,
+                untouched_change_cm=entry["untouched_change_cm"],
+                untouched_pose_change_cm=entry["untouched_change_cm"],
+                model_untouched_change_cm=0.0), entry
 
 
 def _load(runtime, name: str, weights_dir: Path, encoder, allow_untrained: bool, fallback: str):

@@ -137,7 +137,7 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
             emit({"type": "segment", "index": i, "status": "generating", "generator": kind})
             stage = "generate"
             source.fill(b, on_frames, cancelled)
-            done = _pair_pass(source, seg, on_frames)
+            done = pair_pass.resolve_segment(source.people, source.plan, seg, on_frames)
             resolutions += [done] if done else []
             if cfg.review and cfg.rounds > 0 and b - a >= 3:
                 stage = "review"
@@ -168,12 +168,6 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
     except Exception as exc:
         log.exception("job stage %s failed", stage)
         raise StageError(stage, f"{type(exc).__name__}: {exc}") from exc
-
-
-def _pair_pass(source: SegmentSource, seg: GenerationSegment, on_frames) -> dict | None:
-    """The two-person penetration pass (`pair_pass`) on a segment just generated, in
-    `source`; its report when it changed the frames."""
-    return pair_pass.resolve_segment(source.people, source.plan, seg, on_frames)
 
 
 def asked_of(seg: GenerationSegment) -> list[dict]:

@@ -99,7 +99,8 @@ def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temp
 
 # "a tuck jump", "one squat", "a karate front kick": a count of one that the rewrite to the
 # data's words ("jumps", "kicks high forward …") would drop; "jumping jacks" count nothing.
-COUNTABLE = r"(?:jump|kick|punch|squat|hop|cartwheel|flip|somersault|lunge|jab|leap|spin)"
+# The actions `temporal` keeps a count of one for, and spins (retrieval counts their turns).
+COUNTABLE = "(?:" + "|".join(sorted(temporal.COUNTED_ONCE | {"spin"})) + ")"
 ONE_ACTION = re.compile(rf"\b(?:a|an|one|single)\s+(?:[a-z-]+\s+){{0,3}}?{COUNTABLE}s?\b"
                         r"(?!\s+(?:jacks?|ropes?))", re.I)
 COUNTED = re.compile(r"\b(?:once|twice|thrice|times|\d+)\b", re.I)

@@ -129,48 +129,41 @@ def together(c: Cast) -> list[np.ndarray]:
     by side facing the same way a metre or so apart, moved apart where the bodies would meet."""
     if c.solo is None:
         raise ValueError("no one-person generator to play each person's part")
-    text = solo_text(c.texts[0])
+    texts = [solo_text(t) for t in c.texts]
     seed = int(c.rng.integers(2**31))
     people = []
     for person in (0, 1):
-        joints, sources = c.solo(solo_text(c.texts[person]) if c.texts[person] != c.texts[0] else text,
-                                 seed + 7919 * person)
+        joints, sources = c.solo(texts[person], seed + 7919 * person)
         j = refit(np.asarray(joints, np.float64)[:c.frames])
         people.append(turn_to(j, 0.0, np.zeros(2), 0, current=None))
         for src in sources:
             c.source(person, {**src, "mirrored": False}, "together")
-    counts = [_counted(p) for p in people]
-    synced = counts[0] != counts[1]
-    shift = 0
-    if not synced:     # the same actions: the second's first one moved onto the first's
-        onsets = [_onset(p) for p in people]
-        if None not in onsets:
-            shift = int(np.clip(onsets[0] - onsets[1], -FPS, FPS))      # type: ignore[operator]
-            people[1] = _shifted(people[1], shift)
-    if synced:     # a different number of jumps or squats is not together: the same, a beat later
-        people[1] = np.concatenate([np.repeat(people[0][:1], TOGETHER_LAG, 0),
-                                    people[0][:len(people[0]) - TOGETHER_LAG]])
+    (counts0, onset0), (counts1, onset1) = (_events(p) for p in people)
+    same_clip, shift = counts0 != counts1, 0
+    if same_clip:   # a different number of jumps or squats is not together: the same, a beat later
+        people[1] = _shifted(people[0], TOGETHER_LAG)
         c.sources[1] = [{**s, "use": "together (the other's clip, a beat later)"} for s in c.sources[0]]
+    elif onset0 is not None and onset1 is not None:   # the second's first action onto the first's
+        shift = int(np.clip(onset0 - onset1, -FPS, FPS))
+        people[1] = _shifted(people[1], shift)
     gap = float(c.rng.uniform(*TOGETHER_GAP_M))
     a, b = people[0], people[1] + np.array([gap, 0.0, 0.0])
     b, moved = clear(a, b)
-    c.report["together"] = {"text": text, "gap_m": round(gap + moved, 3), "seed": seed,
-                            "counts": counts, "same_clip": synced, "shift_frames": shift}
+    c.report["together"] = {"text": texts[0], "gap_m": round(gap + moved, 3), "seed": seed,
+                            "counts": [counts0, counts1], "same_clip": same_clip,
+                            "shift_frames": shift}
     return [a, b]
 
 
-def _counted(joints: np.ndarray) -> tuple[int, int, int]:
-    """(jumps, squats, kicks) in a motion: what two people doing it together must agree on."""
+def _events(joints: np.ndarray) -> tuple[tuple[int, int, int], int | None]:
+    """((jumps, squats, kicks), the frame of the first of them or None): what two people doing
+    it together must agree on, and when it starts."""
     b = m.frame_of(joints)
-    return len(m.jumps(b)), len(m.squats(b)), sum(len(m.kicks(b, side)) for side in m.SIDES)
-
-
-def _onset(joints: np.ndarray) -> int | None:
-    """The frame of a motion's first jump, squat or kick (None: none)."""
-    b = m.frame_of(joints)
-    at = [(s + e) // 2 for s, e in m.jumps(b)] + [mid for _, mid, _ in m.squats(b)] + \
-        [f for side in m.SIDES for f, _ in m.kicks(b, side)]
-    return min(at) if at else None
+    jumps = [(s + e) // 2 for s, e in m.jumps(b)]
+    squats = [mid for _, mid, _ in m.squats(b)]
+    kicks = [f for side in m.SIDES for f, _ in m.kicks(b, side)]
+    at = jumps + squats + kicks
+    return (len(jumps), len(squats), len(kicks)), (min(at) if at else None)
 
 
 def _shifted(joints: np.ndarray, by: int) -> np.ndarray:

@@ -112,11 +112,7 @@ def turn_of(prompt: str, repeat: int = 1) -> tuple[int, str] | None:
     720°), "turns around" 180°, "turns left" 90° to the left; None when no turn is said."""
     t = prompt.lower()
     if _SPIN.search(t):
-        m = _TIMES.search(t)
-        n = repeat if repeat > 1 else ({"twice": 2, "thrice": 3}.get(m.group(1) or "", 0) or
-                                       (int(m.group(2)) if m and m.group(2) and m.group(2).isdigit()
-                                        else _NUMBERS.get(m.group(2) or "", 1)) if m else 1)
-        return 360 * n, "any"
+        return 360 * (count_of(t, repeat) or 1), "any"
     if _AROUND.search(t):
         return 180, "any"
     m = _TURN_SIDE.search(t)

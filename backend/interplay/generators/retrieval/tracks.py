@@ -75,5 +75,5 @@ def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.G
         # captures of those words still walk; standing ones, from where the last one ended
         draw = lambda: index.track(STANDING, frames, rng, after=after)  # noqa: E731
     if draw is None:       # nothing narrower to draw from: text draws, checked (a speed band)
-        return verify.pick(index, plain, frames, specs) or plain() if specs else plain()
+        return (verify.pick(index, plain, frames, specs) or plain()) if specs else plain()
     return verify.pick(index, draw, frames, specs) or plain()

@@ -60,6 +60,12 @@ def _actions(plan: GenerationPlan) -> tuple[list[ArmAction], list[str]]:
     return acts, reasons
 
 
+def _slowed(plan: GenerationPlan) -> GenerationSegment | None:
+    """The segment `pace.slow_down` may slow: one person's last, when asked to go slowly."""
+    last = plan.segments[-1]
+    return last if plan.persons == 1 and speed_of(last.prompt) == "slow" else None
+
+
 class BaseRetrieval(RetrievalGenerator):
     """Retrieval that looks up a segment's base motion ("a person walks forward") where arm
     actions will be laid over it: the segment's whole prompt ("walks forward while waving")
@@ -83,9 +89,9 @@ class RetrieveEditGenerator:
         plan = self.retrieval.plan(req)
         plan.generator = NAME
         _, reasons = _actions(plan)
-        last = plan.segments[-1]
-        if plan.persons == 1 and speed_of(last.prompt) == "slow":
-            reasons.append(f"segment {last.index}: played slower where its captures travel faster "
+        slow = _slowed(plan)
+        if slow is not None:
+            reasons.append(f"segment {slow.index}: played slower where its captures travel faster "
                            f"than {SLOW_MAX_M_S:g} m/s (a slow walk, `pace.slow_down`)")
         plan.generator_reason = "; ".join(
             ["real captured clips per segment, arm actions laid over them by IK, feet put on "
@@ -104,9 +110,9 @@ class RetrieveEditGenerator:
             legs, _ = knee_lifts(seg)
             if legs:
                 people[0] = lift_knees(people[0], legs, seg.start, seg.end)
-        last = plan.segments[-1]
-        if plan.persons == 1 and speed_of(last.prompt) == "slow":
-            people[0][last.start:last.end] = slow_down(people[0][last.start:last.end])[0]
+        slow = _slowed(plan)
+        if slow is not None:
+            people[0][slow.start:slow.end] = slow_down(people[0][slow.start:slow.end])[0]
         acts, _ = _actions(plan)
         if acts:
             people[0] = apply(people[0], acts)

@@ -18,6 +18,7 @@ import re
 import numpy as np
 
 from interplay.generators.base import Request
+from interplay.generators.retrieval.intent import count_of
 from interplay.motion import skeleton as sk
 from interplay.motion.checks import measures as ms
 from interplay.motion.kinematics import facing_angle
@@ -27,8 +28,6 @@ KICK = re.compile(r"\bkick\w*\b")
 CHAIN = ("hip", "knee", "ankle", "foot")
 HALF_S = 0.75            # the kick laid over ±this around the capture's peak
 BLEND = 5                # frames eased in and out at each kick's borders
-LEGS = ("left_leg", "right_leg", "left_lower", "right_lower")
-_TIMES = {"twice": 2, "two": 2, "three": 3, "thrice": 3}
 
 
 def _side(part: str | None, prompt: str) -> str | None:
@@ -38,11 +37,6 @@ def _side(part: str | None, prompt: str) -> str | None:
             return side
     named = re.findall(r"\b(left|right)\s+(?:leg|foot)\b", prompt.lower())
     return named[0] if len(set(named)) == 1 and key in ("", "whole_body", "body") else None
-
-
-def _count(prompt: str) -> int:
-    m = re.search(r"\b(twice|thrice|two|three)\b", prompt.lower())
-    return _TIMES[m.group(1)] if m else 1
 
 
 def _chain(side: str) -> list[int]:
@@ -86,7 +80,7 @@ def leg_edit(joints: np.ndarray, part: str | None, prompt: str,
     kick = _kick_window(retrieval, side, seed)
     if kick is None:
         return None
-    n, count = len(kick), _count(prompt)
+    n, count = len(kick), count_of(prompt) or 1
     span = b - a
     if span < n:
         return None
