@@ -62,3 +62,11 @@ def test_need_and_fit():
     assert fit([walk, jump], 160) == [120, 40]          # spare time to the free walk
     assert fit([walk, jump], 80) == [51, 29]            # least + a share of the rest
     assert sum(fit([walk, jump, jump], 30)) == 30       # less than they need: in proportion
+
+
+@pytest.mark.parametrize("prompt", ["a couple dances salsa and the man twirls the woman",
+                                    "they dance salsa and she turns under his arm"])
+def test_a_partner_spun_under_an_arm_gets_the_time_a_captured_one_takes(prompt):
+    plan = embedded_plan(prompt, 2, 6.0, load_vocabulary)
+    assert len(plan.segments) == 2
+    assert plan.segments[1].seconds >= 2.5, [(s.prompt, s.seconds) for s in plan.segments]

@@ -131,3 +131,16 @@ def test_composed_retrieval_draws_each_person_by_their_role():
     index.texts.clear()
     gen.retrieve("two people shake hands", 40, 2, np.random.default_rng(0))
     assert index.texts == ["two people shake hands"] * 2    # no roles: the prompt for both
+
+
+@pytest.mark.parametrize("prompt,parts", [("two people shake hands", {"right_arm"}),
+                                          ("two friends shake hands with their left hands", {"left_arm"})])
+def test_a_handshake_is_one_hand_each(prompt, parts):
+    plan = embedded_plan(prompt, 2, 6.0, load_vocabulary)
+    assert {k for k, v in plan.segments[0].edits.named().items() if v} == parts
+
+
+def test_a_dance_follower_is_not_someone_who_follows():
+    from interplay.generators.interaction.kinds import keyword_kind
+    assert keyword_kind("the leader spins the follower")[0] is None
+    assert keyword_kind("one person follows the other")[0] == "follow"

@@ -29,7 +29,7 @@ from interplay.generators.retrieval.verify import checks as asked_checks
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
-from interplay.pipeline import pair_pass
+from interplay.pipeline import pair_pass, pair_review
 from interplay.pipeline.segment_source import Cancelled, SegmentSource
 from interplay.review.reviewer import CannotApply, correct
 from interplay.trajectory.apply import TrajectoryConfig
@@ -132,6 +132,7 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         kind = plan.generator
         spam = kind == "spam" and isinstance(generator, Editor) and generator.can_edit
         history, resolutions = [], []
+        pair_checked = bool(pair_review.interaction_specs(plan))
         for seg in plan.segments:
             i, a, b = seg.index, seg.start, seg.end
             emit({"type": "segment", "index": i, "status": "generating", "generator": kind})
@@ -142,12 +143,27 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
             if cfg.review and cfg.rounds > 0 and b - a >= 3:
                 stage = "review"
                 history.append(_review_segment(generator, source, seg, spam, evaluator, cfg,
-                                               emit, on_frames, plan.seed, done is not None))
+                                               emit, on_frames, plan.seed, done is not None,
+                                               pair_checked))
             if cancelled():
                 raise Cancelled()
             emit({"type": "segment", "index": i, "status": "done", "generator": kind})
-        stage = "trajectory"
         people = source.people[:, :source.written].copy()
+        interaction = None
+        if cfg.review and cfg.rounds > 0 and source.persons == 2:
+            stage = "review"
+            last = max((r["round"] for h in history if h["segment"] == plan.segments[-1].index
+                        for r in h["reviews"]), default=-1)
+            people, source.plan, interaction = pair_review.review_interaction(
+                generator, req, source.plan, people, emit, on_frames, first_round=last + 1,
+                tries=cfg.rounds)
+            if interaction is not None:      # the stored timeline shows it on the last segment
+                entry = next((h for h in history if h["segment"] == plan.segments[-1].index), None)
+                if entry is not None:
+                    entry["reviews"] += [{k: v for k, v in r.items() if k != "type"}
+                                         for r in interaction["rounds"]]
+                    entry["corrections"] += interaction["corrections"]
+        stage = "trajectory"
         first = _trajectories(people, source.plan, trajectory)
         if first is not None:
             for s in range(first, people.shape[1], CHUNK):
@@ -157,11 +173,13 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         if trajectory is not None:
             plan = plan.model_copy()
             plan.trajectory = trajectory
-        review = {"rounds": cfg.rounds, "tolerance": cfg.tolerance,
+        review: dict[str, object] = {"rounds": cfg.rounds, "tolerance": cfg.tolerance,
                   "score_kind": "evaluator" if evaluator is not None else "caption_agreement",
                   "segments": history}
         if resolutions:
             review["pair_resolution"] = resolutions
+        if interaction is not None:
+            review["interaction"] = interaction
         return Outcome(people=[p.astype(np.float32) for p in people], plan=plan, review=review)
     except (Cancelled, StageError):
         raise
@@ -173,15 +191,20 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
 def asked_of(seg: GenerationSegment) -> list[dict]:
     """The benchmark's checks (specs for `run_check`) that one person's segment words imply:
     the retrieval's reading of them (`retrieval.intent`, `retrieval.verify.checks`); the first
-    segment starts standing unless it is asked to start elsewhere."""
+    segment starts standing unless it is asked to start elsewhere; a held pose is held."""
     it = intent(seg.prompt, seg.repeat, seg.travel)
-    return asked_checks(it, it.start, it.end, first=seg.index == 0)
+    out = asked_checks(it, it.start, it.end, first=seg.index == 0)
+    if it.hold is not None:         # a held pose: held at least 1 s (less of a short segment)
+        held = round(min(1.0, 0.4 * (seg.end - seg.start) / 20), 2)
+        out.append({"check": "still"} if it.hold == "still" else
+                   {"check": "pose_held", "pose": it.hold.split(":")[0], "min_s": held})
+    return out
 
 
 def _review_segment(generator: Generator, source: SegmentSource, seg: GenerationSegment,
                     spam: bool, evaluator,
                     cfg: OrchestratorConfig, emit, on_frames, seed: int,
-                    resolved: bool = False) -> dict:
+                    resolved: bool = False, pair_checked: bool = False) -> dict:
     """Review rounds on one segment; corrected frames go back into `source` and out again."""
     i, a, b = seg.index, seg.start, seg.end
     calls: list = []          # per applied instruction: the re-drawn source (or None)
@@ -219,7 +242,8 @@ def _review_segment(generator: Generator, source: SegmentSource, seg: Generation
     last = i == len(source.plan.segments) - 1
     out = correct(seg, window, apply, evaluator=evaluator, rounds=cfg.rounds,
                   tolerance=cfg.tolerance, seed=seed, emit=emit, resolved=resolved,
-                  free_ends=(i == 0, last), asked=asked_of(seg) if source.persons == 1 else None)
+                  free_ends=(i == 0, last), asked=asked_of(seg) if source.persons == 1 else None,
+                  pair_checked=pair_checked)
     applied = [e for e in out.corrections if e["score_after"] is not None]
     redrawn = [c for c, e in zip(calls, applied) if e["accepted"] and c is not None]
     if redrawn:

@@ -65,9 +65,17 @@ def _limbs(side: str | None, noun: str, default_side: str | None = None) -> list
     return [f"{default_side}_{limb}"] if default_side else []
 
 
+# "shake hands" names both people's hands, not both of one person's: a handshake is one
+# right hand each (the benchmark's handshake check compares right hands)
+_HANDSHAKE = re.compile(r"\bshak\w*\s+(?:each\s+other'?s?\s+)?hands?\b")
+
+
 def parts_in(text: str) -> list[str]:
     """The parts a phrase moves: the limb after "with" ("holding the foot with both hands" →
-    arms), else its first limb mention ("hands resting on the knees" → arms)."""
+    arms), else its first limb mention ("hands resting on the knees" → arms); a handshake
+    with no side named, the right arm."""
+    if _HANDSHAKE.search(text) and not re.search(r"\b(left|both)\b", text):
+        return ["right_arm"]
     m = re.search(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + _PART.pattern[2:], text)
     found = _limbs(m.group(1), m.group(2)) if m else []
     if not found:

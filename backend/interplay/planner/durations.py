@@ -44,6 +44,11 @@ LEAST = {"sprint": 2.5, "run": 2.0, "jog": 2.0, "walk": 2.0, "march": 2.0, "stro
 # Actions that can go on for longer than they need: the spare time of a clip is theirs.
 ELASTIC = {"wave", "dance", "wait", "stay", "pose", "balance", "hold", "stand", "stop", "clap",
            "sway", "march", "stretch", "shake", "look", "hug", "rest", "flex", "circle"}
+# A partner turned under a raised arm (a couple's spin): captured salsa followers take
+# 1.5–2.5 s for one, more than a spin on one's own
+_UNDER_ARM = re.compile(r"\bunder (?:[\w']+ ){0,4}arms?\b|\b(?:twirl|spin)s? (?:her|him|them|the (?:follower|"
+                        r"partner|woman|man|girl|boy|lady|other(?: person)?))\b")
+PARTNER_SPIN_S = 2.5
 _SPEED_BACK = 0.7     # a backwards or sideways gait covers ground at ~70 % of its forward speed
 STRIDE_S = 0.6        # seconds a walking step takes, and 0.5 s to start and stop
 _STEPS = re.compile(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
@@ -98,6 +103,9 @@ def need(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat: in
          hold: bool = False) -> Need:
     """What one segment needs; `hold`: it keeps a pose (or posture) until it ends."""
     want = estimate(verb, trajectory, repeat, text, metres, sideways)
+    if _UNDER_ARM.search(text):
+        want = max(want, PARTNER_SPIN_S + 0.5)
+        return Need(want, PARTNER_SPIN_S, hold)
     if verb is None:
         return Need(want, min(want, 1.0), hold)
     bounded = verb.kind == "travel" and bool(trajectory is not None or metres or repeat > 1

@@ -124,6 +124,9 @@ LEXICON: tuple[Entry, ...] = (
       "forward with the right leg while stretching both arms out to the sides"),
     E("heisman pose", r"heisman(?:\s+trophy)?", "raises the right knee while stretching the "
       "left arm forward"),
+    E("freeze", r"freez(?:e|es|ing)(?:\s+(?:and|,)\s+(?:do\s+not|don'?t)\s+move)?(?:\s+in\s+place)?|"
+      r"(?:do\s+not|don'?t)\s+move(?:\s+at\s+all)?|(?:stands?|standing)\s+without\s+moving",
+      "stands completely still"),
     E("karate chop", r"karate\s+chop", "chops down with the right hand"),
     E("golf swing", r"golf\s+swing", "swings both arms across the body like a golf club"),
     E("baseball swing", r"(?:baseball\s+)?bat\s+swing|baseball\s+swing", "swings both arms across the body "

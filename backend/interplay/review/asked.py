@@ -3,7 +3,7 @@
 segment's intent implies (a direction of travel, a side and count of kicks or punches, counts
 of jumps, squats or steps, the posture at the start and the end); the reviewer fails a
 segment that misses one and asks for it again, and keeps a correction only if it misses no
-more of them.
+more of them. Two people: the pair checks of their interaction (`pipeline.pair_review`).
 
     specs = [{"check": "jump_count", "count": 2}]
     missed([joints], specs)          # [("jump_count", "jump_count: 1, asked count 2")]
@@ -17,9 +17,9 @@ from interplay.motion.checks.named import run_check
 
 
 def _results(people: list[np.ndarray], asked: list[dict] | None):
-    if not asked or len(people) != 1:            # one person's words; two people: the roles'
+    if not asked:
         return []
-    return [(spec, run_check([people[0]], spec)) for spec in asked]
+    return [(spec, run_check(list(people), spec)) for spec in asked]
 
 
 def missed(people: list[np.ndarray], asked: list[dict] | None) -> list[tuple[str, str]]:

@@ -98,12 +98,15 @@ def _texts(seg: Segment, persons: int) -> list[str]:
 
 def review(seg: Segment, joints, evaluator: Evaluator | None = None,
            encoder: Encoder | None = None, round: int = 0, resolved: bool = False,
-           asked: list[dict] | None = None) -> Review:
+           asked: list[dict] | None = None, pair_checked: bool = False) -> Review:
     """Review one planned segment: `joints` one (T, 22, 3) array per person for the segment's
     frames (T ≥ 3). `resolved`: the penetration resolution has already run on these frames
     (then a pair still over the bound is re-generated rather than resolved again). `asked`:
     the benchmark's checks the segment's words imply (`review.asked`); one it misses fails the
-    segment and asks for it again."""
+    segment and asks for it again. `pair_checked`: two people whose interaction the
+    pipeline judges by its pair checks on the whole motion (`pipeline.pair_review`); their
+    part edits ("shakes hands", "hugs") are then not judged by one person's captions, which
+    have no words for them."""
     people = [np.asarray(p, dtype=np.float64) for p in joints]
     if not people or any(p.ndim != 3 or p.shape[1:] != (sk.NUM_JOINTS, 3) for p in people):
         raise ValueError(f"joints must be one (T, 22, 3) array per person, got "
@@ -121,7 +124,7 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
                                for (_, s), t in zip(captioned, texts)]))
         kind = "caption_agreement"
     parts0, summary0 = captioned[0]
-    edits = seg.edits.named()
+    edits = {} if pair_checked and len(people) == 2 else seg.edits.named()
     confirmed: dict[str, bool] = {}
     instructions: list[dict[str, Any]] = []
     for part, planned in edits.items():
@@ -219,8 +222,8 @@ def _better(before: dict, after: dict) -> bool:
 def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None = None,
             rounds: int = 2, tolerance: float = 0.1, seed: int = 0, encoder: Encoder | None = None,
             emit: Callable[[dict], None] | None = None, resolved: bool = False,
-            free_ends: tuple[bool, bool] = (True, True), asked: list[dict] | None = None
-            ) -> Corrected:
+            free_ends: tuple[bool, bool] = (True, True), asked: list[dict] | None = None,
+            pair_checked: bool = False) -> Corrected:
     """Algorithm 1's self-correction loop on one segment: review, run the instructions through
     `apply`, at most `rounds` rounds. A correction is kept only if the score does not drop and
     no watched metric gets worse beyond `tolerance`; otherwise the previous motion is kept and
@@ -236,7 +239,8 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
         raise ValueError(f"rounds must be ≥ 0, got {rounds}")
     emit = emit or (lambda e: None)
     people = [np.asarray(p, dtype=np.float64) for p in joints]
-    current = review(seg, people, evaluator, encoder, round=0, resolved=resolved, asked=asked)
+    current = review(seg, people, evaluator, encoder, round=0, resolved=resolved, asked=asked,
+                     pair_checked=pair_checked)
     emit(current.event())
     reviews, corrections, stop = [current], [], False
     rng = np.random.default_rng([seed % 2**63, seg.index])
@@ -263,7 +267,7 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 continue
             two = len(candidate) == 2
             after = review(seg, candidate, evaluator, encoder, round=r, resolved=resolved or two,
-                           asked=asked)
+                           asked=asked, pair_checked=pair_checked)
             event["score_after"] = after.score
             if report is not None:
                 # a physical fix: kept when the bound is met or lower, whatever the text score
@@ -290,7 +294,8 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 break
         if not changed:
             break
-        current = review(seg, people, evaluator, encoder, round=r, resolved=resolved, asked=asked)
+        current = review(seg, people, evaluator, encoder, round=r, resolved=resolved, asked=asked,
+                     pair_checked=pair_checked)
         emit(current.event())
         reviews.append(current)
     return Corrected(people=people, reviews=reviews, corrections=corrections)

@@ -31,7 +31,7 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     ("wave", r"\bwav(e|es|ed|ing)\b"),
     ("bow", r"\bbow(s|ed|ing)?\b"),
     ("mirror", r"\bmirror\w*|\bcop(y|ies|ied|ying)\b|\bimitat\w*|\bmimic\w*"),
-    ("follow", r"\bfollow\w*|\bchas(e|es|ed|ing)\b|\bbehind\b"),
+    ("follow", r"\bfollow(?!ers?\b)\w*|\bchas(e|es|ed|ing)\b|\bbehind\b"),
     ("one_stops", r"\b(one|the other|one of them|one person)\b[^.]*\bstops?\b"),
     ("side_by_side", r"\bside by side\b|\bnext to each other\b|\bbeside each other\b|"
                      r"\balongside\b|\bhand in hand\b|\bhold\w* hands\b|\bwalk\w* together\b"),
@@ -43,7 +43,7 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
 )
 _NOT_TOGETHER = r"\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*|\bwrestl\w*"
 # Prompts this generator leaves to another (checked before the encoder's guess).
-_NOT_MINE = r"\bpush[\s-]?ups?\b|\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bjump\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*"
+_NOT_MINE = r"\bpush[\s-]?ups?\b|\bdanc\w*|\bleader\b|\bfollower\b|\btwirl\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bjump\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*"
 _HELD = r"\bhand in hand\b|\bhold\w* hands\b|\bholding each other'?s? hands?\b"
 _APPROACH = r"\b(walk|come|run|step|move|head)\w* (up )?(to|towards?) each other\b|\bapproach\w*|" \
             r"\bwalk\w* up to\b"

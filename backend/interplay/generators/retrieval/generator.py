@@ -2,7 +2,8 @@
 motion found by text (`index.RetrievalIndex`) and stitched (`stitch.Stitcher`). For two
 people it uses a two-person capture when the prompt matches one (salsa); otherwise it composes
 two single-person captures, facing each other 1.5 m apart (side by side when they travel),
-and marks the segment as synthetic. One person's segment is drawn for what its words ask
+and marks the segment as synthetic; a couple's dance is drawn close together, a spin cut where a
+captured salsa follower spins (`couple.py`). One person's segment is drawn for what its words ask
 beyond the nearest captures (`tracks.py`: direction of travel, side, counts, postures, with
 mirrored and time-reversed views of the captures); a track shorter than its segment holds its
 last pose to the segment's end.
@@ -29,6 +30,7 @@ from interplay.generators.plan import (
     RetrievalChoice,
     Source,
 )
+from interplay.generators.retrieval.couple import couple_track
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieval.intent import FASTEST_M_S, intent, speed_of
 from interplay.generators.retrieval.stitch import Stitcher
@@ -85,9 +87,10 @@ class RetrievalGenerator:
         if persons == 1:      # what the words ask beyond the nearest captures: tracks.py
             return RetrievalChoice(mode="single", synthetic=False, tracks=[_pieces(single_track(
                 idx, prompt, frames, rng, after[0] if after else None, intent(prompt, repeat, direction)))])
-        if persons == 2 and idx.use_pair(prompt):
-            return RetrievalChoice(mode="pair", synthetic=False, tracks=[
-                _pieces(idx.track(prompt, frames, rng, pair=True, after=_pair_end(after)))])
+        if persons == 2:      # a two-person capture (salsa), a spin cut around one: couple.py
+            pair = couple_track(idx, prompt, frames, rng, after=_pair_end(after))
+            if pair is not None:
+                return RetrievalChoice(mode="pair", synthetic=False, tracks=[_pieces(pair)])
         texts = [prompt, prompt]
         if persons == 2 and roles:
             texts = [roles.get("0") or prompt, roles.get("1") or prompt]

@@ -36,6 +36,7 @@ class Intent:
     turn: tuple[int, str] | None = None   # (degrees, left / right / any) the facing must turn
     still: bool = False         # it stops and stands still (the pelvis stays within a step)
     in_place: bool = False      # on the spot / in place: the pelvis stays within 0.6 m
+    hold: str | None = None     # a held pose: "one_leg:left|right" (the lifted leg), "squat", "still"
 
     @property
     def plain(self) -> bool:
@@ -198,13 +199,43 @@ def postures_of(prompt: str) -> tuple[str | None, str | None, bool]:
     return start, end, rises
 
 
+# Held poses no capture holds for long (retrieve_edit.holds lays them over a stand or a squat)
+_ONE_LEG = re.compile(r"\b(?:stand\w*|balanc\w*|stay\w*|remain\w*)\b[^.]*?\bon (?:one|a single|the (?:left|right)"
+                      r"|(?:your|his|her|their) (?:left|right)) (?:leg|foot)\b"
+                      r"|\b(?:lift|rais)\w* (?:one|a|the (?:left|right)|(?:your|his|her|their) (?:left|right)) "
+                      r"(?:leg|foot)\b[^.]*\b(?:balanc|hold)\w*")
+_SQUAT_HELD = re.compile(r"\b(?:hold\w*|stay\w*|remain\w*|keep\w*)\b[^.]*\bsquat\w*|\bsquat\w*\b[^.]*\b(?:hold\w*|"
+                         r"stay\w*|remain\w*)\b|\bin a (?:deep |low |full )?squat\b")
+_STILL_HELD = re.compile(r"\b(?:perfectly|completely|totally|absolutely|very) still\b|\bmotionless\b|"
+                         r"\bwithout (?:moving|a movement|motion)\b|\bdo(?:es)?n'?t move\b|\bfreez\w*\b|"
+                         r"\bnot mov\w*\b|\bstock[- ]still\b|\bstill as a statue\b")
+
+
+def hold_of(prompt: str) -> str | None:
+    """The held pose the words ask for: "one_leg:right" (standing on the left, the right leg
+    lifted), "squat" (held down), "still" (no fidgeting), or None."""
+    t = prompt.lower()
+    if _ONE_LEG.search(t) and not re.search(r"\bhop\w*|\bjump\w*|\bkick\w*", t):
+        stance = re.search(r"\bon (?:the |your |his |her |their )?(left|right) (?:leg|foot)\b", t)
+        lifted = re.search(r"\b(?:lift|rais)\w* (?:the |your |his |her |their )?(left|right)", t)
+        side = (lifted.group(1) if lifted else
+                {"left": "right", "right": "left"}[stance.group(1)] if stance else "right")
+        return f"one_leg:{side}"
+    if _SQUAT_HELD.search(t):
+        return "squat"
+    if _STILL_HELD.search(t):
+        return "still"
+    return None
+
+
 def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
     """What a segment asks for (see the module doc); `travel` is the plan's own direction of
     travel when it has one ("forward" counts as none)."""
     go = travel if travel in TRAVELS else None if travel is not None else travel_of(prompt)
     start, end, rises = postures_of(prompt)
     action = action_of(prompt)
-    count = count_of(prompt, repeat) if action else None
+    hold = hold_of(prompt)
+    count = count_of(prompt, repeat) if action and hold != "squat" else None
     if action == "step" and count is None:
         action = None                      # "steps sideways": travel, not a count of steps
     return Intent(travel=go, side=side_of(prompt), action=action, count=count,
@@ -213,4 +244,5 @@ def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
                   still=still_of(prompt) and action is None and go is None,
                   # an action on the spot (hops, jumps, kicks): a wider text draw kept only
                   # for staying put plays clips of other actions that do
-                  in_place=bool(_IN_PLACE.search(prompt.lower())) and go is None and action is not None)
+                  in_place=bool(_IN_PLACE.search(prompt.lower())) and go is None and action is not None,
+                  hold=hold)

@@ -20,7 +20,9 @@ BOTH: tuple[tuple[str, re.Pattern[str]], ...] = (
     ("t_pose", re.compile(r"\bt[- ]?pose\b|arms? (?:stretched |held |spread |straight )?"
                           r"(?:out )?(?:wide |out )?to (?:the|your|his|her|their) sides?"
                           r"|arms? outstretched|outstretched arms|like an? (?:aero|air)plane"
-                          r"|arms? spread (?:wide|out)")),
+                          r"|arms? spread (?:wide|out)"
+                          # "with the arms out": to the sides, unless it says in front
+                          r"|arms? (?:held |stretched |spread |straight )?out\b(?! (?:in front|forward|ahead|to the front))")),
     ("arm_crossed", re.compile(r"\barms? (?:are |folded |)?crossed|cross(?:es|ing)? "
                                r"(?:your |his |her |their |the |both )*arms|folded arms"
                                r"|arms? folded|fold(?:s|ing)? (?:your |his |her |their )?arms")),

@@ -35,6 +35,8 @@ from interplay.generators.retrieval.intent import speed_of
 from interplay.generators.retrieve_edit.actions import arm_actions, knee_lifts
 from interplay.generators.retrieve_edit.arm_poses import ArmAction, apply
 from interplay.generators.retrieve_edit.ground import on_floor
+from interplay.generators.retrieve_edit.holds import apply_hold, hold_of, query_of
+from interplay.generators.retrieve_edit.holds import reason as hold_reason
 from interplay.generators.retrieve_edit.leg_lifts import lift_knees
 from interplay.generators.retrieve_edit.pace import SLOW_MAX_M_S, slow_down
 from interplay.motion.motion import Motion
@@ -49,7 +51,17 @@ def _actions(plan: GenerationPlan) -> tuple[list[ArmAction], list[str]]:
     reasons: list[str] = []
     for seg in plan.segments:
         new, why = arm_actions(seg)
+        if seg.retrieval is not None and seg.retrieval.mode == "pair":
+            # both people of one capture (a salsa): their arms hold each other as captured, and
+            # the leader's arm goes up for a spin only while it turns the follower
+            if new:
+                reasons.append(f"segment {seg.index}: a two-person capture, its arms kept as "
+                               "captured (no arm action laid over)")
+            continue
         why += knee_lifts(seg)[1]
+        hold = hold_of(seg)
+        if hold is not None:
+            why.append(hold_reason(hold, seg))
         reasons += [f"segment {seg.index}: {w}" for w in why]
         for a in new:
             prev = next((p for p in reversed(acts) if p.side == a.side), None)
@@ -74,6 +86,9 @@ class BaseRetrieval(RetrievalGenerator):
     def query(self, seg: GenerationSegment) -> str:
         if len(seg.persons) != 1:
             return seg.prompt
+        hold = hold_of(seg)
+        if hold is not None:
+            return query_of(hold)
         acts, _ = arm_actions(seg)
         return seg.base if acts or knee_lifts(seg)[0] else seg.prompt
 
@@ -108,8 +123,11 @@ class RetrieveEditGenerator:
                   for i in range(plan.persons)]
         for seg in plan.segments:
             legs, _ = knee_lifts(seg)
-            if legs:
+            if legs and not (seg.retrieval is not None and seg.retrieval.mode == "pair"):
                 people[0] = lift_knees(people[0], legs, seg.start, seg.end)
+            hold = hold_of(seg)
+            if hold is not None:
+                people[0] = apply_hold(people[0], hold, seg.start, seg.end)
         slow = _slowed(plan)
         if slow is not None:
             people[0][slow.start:slow.end] = slow_down(people[0][slow.start:slow.end])[0]

@@ -10,6 +10,7 @@ the processed real captures in `models/data` (CMU, HDM05, salsa).
 from __future__ import annotations
 
 import numpy as np
+from numpy.lib.stride_tricks import sliding_window_view
 
 from interplay.motion import skeleton as sk
 from interplay.motion.bodyframe import BodyFrame, angle, body_frame
@@ -296,6 +297,18 @@ def travel(b: BodyFrame) -> dict[str, float]:
 def heading(b: BodyFrame) -> np.ndarray:
     """Facing yaw (T,) in degrees, unwrapped; grows when the person turns to their left."""
     return np.degrees(np.unwrap(np.arctan2(b.forward[:, 0], b.forward[:, 2])))
+
+
+def partner_turns(a: np.ndarray, b: np.ndarray, fa: BodyFrame, fb: BodyFrame, n: int,
+                  max_m: float) -> np.ndarray:
+    """(T − n,) degrees one of two people turns over frames s … s + n while the pelvises stay
+    within `max_m` m and the other turns under half as much (0 where neither does): a
+    couple's spin, the follower turned under the leader's arm."""
+    dist = np.linalg.norm(a[:, sk.PELVIS][:, [0, 2]] - b[:, sk.PELVIS][:, [0, 2]], axis=1)
+    near = sliding_window_view(dist, n + 1).max(axis=1) <= max_m
+    ya, yb = heading(fa), heading(fb)
+    ta, tb = np.abs(ya[n:] - ya[:-n]), np.abs(yb[n:] - yb[:-n])
+    return np.maximum(np.where(near & (tb < ta / 2), ta, 0.0), np.where(near & (ta < tb / 2), tb, 0.0))
 
 
 def steps(b: BodyFrame) -> int:

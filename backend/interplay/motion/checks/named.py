@@ -631,6 +631,15 @@ def close_together(a, b, fa, fb, max_m: float = 1.2, share: float = 0.8):
 
 
 @pair
+def partner_spin(a, b, fa, fb, min_deg: float = 300.0, within_s: float = 2.5, max_m: float = 1.2):
+    """One spins (the facing turns ≥ `min_deg` within `within_s` s) close to the other (pelvises ≤ `max_m` m), who turns under half that."""
+    n = min(m.frames(within_s), len(a) - 1)
+    best = float(m.partner_turns(a, b, fa, fb, n, max_m).max()) if n >= 1 else 0.0
+    return best >= min_deg, round(best), (
+        f"one turns ≥ {min_deg:.0f}° in {within_s} s within {max_m} m of the other, who turns under half that")
+
+
+@pair
 def approach(a, b, fa, fb, min_m: float = 1.0):
     """The two come ≥ `min_m` m closer (pelvis distance, first frame to closest)."""
     dist = np.linalg.norm(a[:, sk.PELVIS][:, [0, 2]] - b[:, sk.PELVIS][:, [0, 2]], axis=1)
