@@ -96,7 +96,9 @@ def _bounds_ok(people: np.ndarray, plan: GenerationPlan) -> bool:
                for s in plan.segments if s.end - s.start >= 2 and s.end <= people.shape[1])
 
 
-def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray) -> dict:
+def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray
+           ) -> tuple[dict, int]:
+    """The review event of one round and how many of the checks passed (run once each)."""
     missed = asked.missed(list(people), specs)
     failed = {f"asked_{name}": why for name, why in missed}
     instructions = [{"kind": "regenerate", "prompt": plan.prompt,
@@ -107,7 +109,7 @@ def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray) 
             "captions": {}, "summary": f"interaction checks: {n - len(missed)} of {n} passed",
             "score": round((n - len(missed)) / n, 4), "score_kind": "interaction_checks",
             "confirmed": {}, "checks": {"failed": failed, "windows": [], "metrics": {}},
-            "instructions": instructions, "verdict": "correct" if missed else "ok"}
+            "instructions": instructions, "verdict": "correct" if missed else "ok"}, n - len(missed)
 
 
 def _made(generator: Generator, req: Request, seed: int) -> tuple[GenerationPlan, np.ndarray]:
@@ -129,10 +131,9 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
     specs = interaction_specs(plan)
     if not specs or people.shape[0] != 2:
         return people, plan, None
-    event = _event(plan, first_round, specs, people)
+    event, best = _event(plan, first_round, specs, people)
     emit(event)
     rounds, corrections = [event], []
-    best = asked.passed(list(people), specs)
     rng = np.random.default_rng([plan.seed % 2**63, 15])
     for k in range(tries):
         if best == len(specs):
@@ -149,15 +150,14 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
             corrections.append(correction)
             emit(correction)
             break
-        n = min(new.shape[1], people.shape[1])
-        got = asked.passed(list(new), specs)
-        after = _event(new_plan, first_round + k + 1, specs, new)
+        after, got = _event(new_plan, first_round + k + 1, specs, new)
         correction["score_after"] = after["score"]
         if got > best and new.shape[1] == people.shape[1] and _bounds_ok(new, new_plan):
             correction["accepted"] = True
             people, plan, best = new, new_plan, got
             plan.reasons.append(f"interaction review: made again with seed {seed} "
                                 f"({instr['reason']})")
+            n = people.shape[1]
             for s in range(0, n, CHUNK):
                 on_frames(s, [p[s:min(n, s + CHUNK)] for p in people])
             corrections.append(correction)
