@@ -2,7 +2,7 @@
 
     Plan     {prompt, rewritten, persons, seconds, segments, reasons, planner, fallback_reason}
     Segment  {index, prompt, base, edits, trajectory, seconds, start, end, persons, roles, repeat,
-              travel?, timing?}
+              travel?, timing?, coverage?}
 
 A segment is one temporal step of the motion (CoMA's P_i): `prompt` is its rewritten text,
 `base` the whole-body motion (P_base), `edits` one instruction per body part or None (P_edit),
@@ -210,9 +210,29 @@ class RoleTiming(BaseModel):
         return self
 
 
+CoverageHow = Literal["capture", "primitive", "composed", "nearest"]
+
+
+class Coverage(BaseModel):
+    """How a segment was made and how sure the studio is that it shows what was asked.
+
+    how: "capture" (real clips the words name), "primitive" (built per body part from the
+    catalogue's primitives), "composed" (two people timed from real clips), "nearest" (nothing
+    in the catalogue fits: the nearest clip is shown and the segment is reported not covered).
+    similarity: the text-encoder cosine that chose it (catalogue entry or caption), in [-1, 1].
+    confidence: calibrated probability that the segment shows its words, in [0, 1].
+    shown: what was shown, in words (the entry or caption it was made from)."""
+    model_config = ConfigDict(extra="forbid")
+    how: CoverageHow
+    similarity: float = Field(ge=-1.0, le=1.0)
+    confidence: float = Field(ge=0.0, le=1.0)
+    shown: str = Field(default="", max_length=300)
+    entry: str | None = None          # the catalogue entry it was matched to
+
+
 # Optional segment fields added after plans were first stored: left out of the JSON when unset,
 # so a plan without them reads and writes exactly as before.
-_OPTIONAL = ("travel", "timing")
+_OPTIONAL = ("travel", "timing", "coverage")
 
 
 class Segment(BaseModel):
@@ -230,6 +250,7 @@ class Segment(BaseModel):
     repeat: int = Field(default=1, ge=1, le=20)
     travel: Travel | None = None           # direction of travel relative to facing
     timing: RoleTiming | None = None       # two people: who starts, who answers and when
+    coverage: Coverage | None = None       # how it was made; set by the generator
 
     @model_serializer(mode="wrap")
     def _drop_unset(self, handler: SerializerFunctionWrapHandler) -> dict:
