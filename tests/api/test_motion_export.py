@@ -49,7 +49,7 @@ def test_bvh_presets_are_the_writers(fake_client, pair, query, preset):
     assert np.abs(bvh.positions(True) - want.positions(True)).max() < 2e-3 * (100 if "units" in query else 1)
     fps = query.get("fps", 20)
     assert bvh.fps == pytest.approx(fps, rel=1e-6)
-    assert bvh.num_frames == int(np.floor((len(people[0]) - 1) / 20 * fps + 1e-6)) + 1
+    assert bvh.num_frames == int(np.ceil((len(people[0]) - 1) / 20 * fps - 1e-6)) + 1   # the end kept
     assert bvh.names[0] == ("Hips" if query.get("names") == "mixamo" else "pelvis")
     if query.get("names") == "mixamo":
         assert set(bvh.names) == set(MIXAMO_NAMES)

@@ -37,7 +37,7 @@ def test_bvh_presets_from_flags_read_back_in_bvhio(pair_file, tmp_path, flags):
     opts = dict(zip(flags[::2], flags[1::2]))
     fps, units = int(opts.get("--fps", 20)), opts.get("--units", "m")
     got, frames, frame_time = bvhio_positions(out, joint_names(opts.get("--names", "smpl")))
-    assert frames == int(np.floor(39 / 20 * fps + 1e-6)) + 1 and abs(1 / frame_time - fps) < 1e-3
+    assert frames == int(np.ceil(39 / 20 * fps - 1e-6)) + 1 and abs(1 / frame_time - fps) < 1e-3
     if opts.get("--up") == "z":
         got = got @ Z_UP
     got = got / UNITS[units]

@@ -24,15 +24,20 @@ so positions do not change) and a secondary axis that fixes the twist:
 Wherever that reference says little (a straight knee or elbow has no bend plane; a bone
 pointing along its reference axis), the previous frame's axis, held in the parent's frame,
 takes over smoothly: the twist is propagated along time, never re-solved from rest, so it does
-not jump while the bone barely moves. Leaves carry no bone: the head and wrists continue their
-parent's rotation (nothing in 22 joints tells a head turn or a hand bend), and each toe
-follows its foot unless its tip (the end site) would dip under the floor: then it pitches up
-just enough, so a flat foot's toes lie on the floor, not through it. Quaternions keep one sign
+not jump while the bone barely moves. Leaves carry no bone, so nothing in 22 joints says how
+they turn; they get the rotations the moves imply (`LEAVES`): the head turns on the neck by
+HEAD_SHARE of the neck's own turn (a nod, which tilts the neck→head bone, pitches the face
+further; smooth wherever the neck is); each hand trails its forearm's swing with a lag of
+HAND_LAG seconds, bent at most HAND_BEND (a wave turns the hand to and fro); explicit per-frame
+rotations (`leaves=`, e.g. from an edit) replace either. Then no leaf's tip goes under the
+floor: a toe whose tip (the end site) would dip pitches up just enough (a flat foot's toes lie
+on the floor), and so does a hand whose mesh tip (HAND_REACH along it, HAND_THICK thick) would. Quaternions keep one sign
 through time (q and -q are the same rotation; a reader interpolating them must not see a flip).
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -60,6 +65,14 @@ _SURE = 0.5
 # faster (a hinge's bend plane turning while the limb is almost straight) the twist follows
 # over a few frames instead of in one, and the hinge is briefly not a pure hinge.
 _STEP = np.deg2rad(15.0)
+# The leaves (joints with no child): their rotations are not in the joints (see above).
+LEAVES: tuple[str, ...] = ("head", "left_wrist", "right_wrist")
+HEAD_SHARE = 0.5                 # the head's turn on the neck, as a share of the neck's
+HAND_LAG = 0.08                  # s: the hand follows its forearm's direction with this lag
+HAND_BEND = np.deg2rad(40.0)     # the lag bends the wrist at most this much
+# The studio's mesh hand (`formats/humanoid.py`) on the template: its length from the wrist
+# and its half thickness (m); scaled to the person.
+HAND_REACH, HAND_THICK = 0.175, 0.024
 
 
 @dataclass(frozen=True, eq=False)
@@ -112,7 +125,7 @@ def end_sites(offsets: np.ndarray) -> dict[int, np.ndarray]:
     crown above the head, the hand along the forearm, the toe tip ahead of the ball of the
     foot. Shared by the exports so that every file ends its leaves the same way."""
     offsets = np.asarray(offsets, dtype=np.float64)
-    scale = np.linalg.norm(offsets[1:], axis=1).sum() / np.linalg.norm(sk.REST_OFFSETS[1:], axis=1).sum()
+    scale = _body_scale(offsets)
     out = {sk.HEAD: np.array([0.0, 0.10, 0.0]) * scale}
     for hand in (sk.LEFT_HAND, sk.RIGHT_HAND):
         out[hand] = offsets[hand] / np.linalg.norm(offsets[hand]) * 0.08 * scale
@@ -223,14 +236,18 @@ def _propagate(bone: np.ndarray, ref: np.ndarray, start: np.ndarray) -> np.ndarr
     return out
 
 
-def _toe_above_floor(joints: np.ndarray, glob_ankle: np.ndarray, toe: int, length: float,
-                     floor: float) -> np.ndarray:
-    """Local rotations (T, 3, 3) of a toe joint: identity (the toe follows the foot) unless
-    its tip (rest +Z, `length` ahead) would be under the floor; then the least pitch up that
-    puts the tip on the floor, or level with the toe joint when the joint itself is under it.
-    A flat foot's toes lie flat; the pitch is a continuous function of the pose."""
-    tip = glob_ankle[:, :, 2]                                    # tip direction, world (T, 3)
-    height = joints[:, toe, 1] - floor
+def _body_scale(offsets: np.ndarray) -> float:
+    return float(np.linalg.norm(offsets[1:], axis=1).sum()
+                 / np.linalg.norm(sk.REST_OFFSETS[1:], axis=1).sum())
+
+
+def _tip_above_floor(height: np.ndarray, glob_leaf: np.ndarray, rest_dir: np.ndarray,
+                     length: float) -> np.ndarray:
+    """World pitches (T, 3, 3) for a leaf joint: identity unless its tip (`length` along
+    `rest_dir`, in its rest frame) would be under the floor, the joint being `height` (T,)
+    above it; then the least pitch up that puts the tip on the floor, or level with the joint
+    when the joint itself is under it. A continuous function of the pose."""
+    tip = glob_leaf @ rest_dir                                   # tip direction, world (T, 3)
     want = np.clip(-height / length, -1.0, 0.0)                  # lowest allowed tip direction y
     low = tip[:, 1] < want
     flat = np.linalg.norm(tip[:, [0, 2]], axis=-1)
@@ -239,10 +256,62 @@ def _toe_above_floor(joints: np.ndarray, glob_ankle: np.ndarray, toe: int, lengt
     level = np.where(ok[:, None], tip * np.array([1.0, 0.0, 1.0]) / np.maximum(flat, 1e-6)[:, None], tip)
     target = level * np.sqrt(1 - want ** 2)[:, None]
     target[:, 1] = want
-    world = np.where(ok[:, None, None], rotation_between(tip, np.where(ok[:, None], target, tip)),
-                     np.eye(3))
-    # World pitch applied after the ankle's rotation → local: ankle^T · pitch · ankle.
-    return np.swapaxes(glob_ankle, -1, -2) @ world @ glob_ankle
+    return np.where(ok[:, None, None], rotation_between(tip, np.where(ok[:, None], target, tip)),
+                    np.eye(3))
+
+
+def _hand_lag(joints: np.ndarray, wrist: int, fps: float) -> np.ndarray:
+    """World swings (T, 3, 3) that bend a hand from its forearm's direction towards where the
+    forearm pointed a moment ago: the direction followed with time constant HAND_LAG, at
+    most HAND_BEND away (so the wrist turns with any swing of the forearm: a wave, an arm
+    swing, a throw's follow-through)."""
+    d = _unit(joints[:, wrist] - joints[:, sk.PARENTS[wrist]])
+    alpha = 1.0 - np.exp(-1.0 / (max(float(fps), 1e-6) * HAND_LAG))
+    h = np.empty_like(d)
+    h[0] = d[0]
+    limit = np.cos(HAND_BEND)
+    for i in range(1, len(d)):
+        g = h[i - 1] + alpha * (d[i] - h[i - 1])
+        g = g / max(float(np.linalg.norm(g)), 1e-12)
+        c = float(g @ d[i])
+        if c < limit:                                            # clamp to HAND_BEND from d
+            side = _unit(_perp(g, d[i]))
+            g = limit * d[i] + np.sin(HAND_BEND) * side
+        h[i] = g
+    return rotation_between(d, h)
+
+
+def _leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob: np.ndarray,
+            fps: float, floor: float, given: Mapping[str, np.ndarray]) -> None:
+    """Fills the local rotations of the head, wrists and toes in place (see the module's
+    docstring): derived, or `given` (local quaternions (T, 4) by joint name), then kept off
+    the floor."""
+    head, neck = J["head"], J["neck"]
+    local[:, head] = quat_to_matrix(slerp(np.array([1.0, 0.0, 0.0, 0.0]),
+                                          matrix_to_quat(local[:, neck]), np.asarray(HEAD_SHARE)))
+    for wrist in (sk.LEFT_HAND, sk.RIGHT_HAND):
+        g_el = glob[:, sk.PARENTS[wrist]]
+        local[:, wrist] = np.swapaxes(g_el, -1, -2) @ _hand_lag(joints, wrist, fps) @ g_el
+    for name, q in given.items():
+        if name not in LEAVES:
+            raise ValueError(f"explicit rotations are for {', '.join(LEAVES)}, got {name!r}")
+        q = np.asarray(q, dtype=np.float64)
+        if q.shape != (len(joints), 4) or not np.all(np.isfinite(q)):
+            raise ValueError(f"{name}: rotations must be finite (T={len(joints)}, 4), got {q.shape}")
+        local[:, J[name]] = quat_to_matrix(q / np.maximum(np.linalg.norm(q, axis=-1, keepdims=True), 1e-12))
+    tips = end_sites(offsets)
+    scale = _body_scale(offsets)
+    for wrist in (sk.LEFT_HAND, sk.RIGHT_HAND):
+        g_el = glob[:, sk.PARENTS[wrist]]
+        g = g_el @ local[:, wrist]
+        height = joints[:, wrist, 1] - floor - HAND_THICK * scale
+        pitch = _tip_above_floor(height, g, _unit(offsets[wrist]), HAND_REACH * scale)
+        local[:, wrist] = np.swapaxes(g_el, -1, -2) @ pitch @ g
+    for toe in _TOES:
+        g_an = glob[:, sk.PARENTS[toe]]
+        pitch = _tip_above_floor(joints[:, toe, 1] - floor, g_an, _Z, float(np.linalg.norm(tips[toe])))
+        # World pitch applied after the ankle's rotation → local: ankle^T · pitch · ankle.
+        local[:, toe] = np.swapaxes(g_an, -1, -2) @ pitch @ g_an
 
 
 def _continuous(q: np.ndarray) -> np.ndarray:
@@ -255,13 +324,14 @@ def _continuous(q: np.ndarray) -> np.ndarray:
 
 
 def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: float = sk.FPS,
-              floor: float | None = None) -> Rig:
+              floor: float | None = None, leaves: Mapping[str, np.ndarray] | None = None) -> Rig:
     """A Rig (offsets, root, continuous local rotations) reproducing joints (T, 22, 3) by FK:
     exactly (to float precision) when the joints lie on the offsets' bone lengths, as every
     motion in Interplay does. offsets (22, 3) default to the motion's own (`fit_offsets`).
     floor: the ground's height (y, m) the toe tips keep above; the person's own
-    (`kinematics.floor_height`) when None; pass the shared one for two people. fps, the
-    motion's rate, is accepted for the exports' symmetry; the rotations do not depend on it."""
+    (`kinematics.floor_height`) when None; pass the shared one for two people. fps: the
+    motion's rate (the hands' lag is in seconds). leaves: explicit local rotations (T, 4),
+    w x y z, of "head", "left_wrist" or "right_wrist" (an edit's), in place of the derived."""
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or joints.shape[0] < 1:
         raise ValueError(f"joints must be (T >= 1, {sk.NUM_JOINTS}, 3), got {joints.shape}")
@@ -310,12 +380,8 @@ def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: flo
     # spine3's global is its children's frame; its local follows from spine2's.
     s3 = J["spine3"]
     local[:, s3] = np.swapaxes(glob[:, sk.PARENTS[s3]], -1, -2) @ glob[:, s3]
-    # Leaves: head and wrists continue the parent; toes level with the floor in contact.
     ground = floor_height([joints]) if floor is None else float(floor)
-    tips = end_sites(offsets)
-    for toe in _TOES:
-        local[:, toe] = _toe_above_floor(joints, glob[:, sk.PARENTS[toe]], toe,
-                                         float(np.linalg.norm(tips[toe])), ground)
+    _leaves(joints, offsets, local, glob, fps, ground, leaves or {})
     quats = _continuous(matrix_to_quat(local))
     return Rig(offsets=offsets.copy(), root=joints[:, sk.PELVIS].copy(), rotations=quats)
 
@@ -365,14 +431,23 @@ def slerp(q0: np.ndarray, q1: np.ndarray, w: np.ndarray) -> np.ndarray:
     return out / np.linalg.norm(out, axis=-1, keepdims=True)
 
 
+def resampled_frames(n: int, src_fps: float, dst_fps: float) -> int:
+    """How many frames n frames at src_fps become at dst_fps: the duration's, rounded up so
+    that the end is included."""
+    if n < 2 or abs(src_fps - dst_fps) < 1e-9:
+        return n
+    return int(np.ceil((n - 1) / src_fps * dst_fps - 1e-6)) + 1
+
+
 def resample_rig(rig: Rig, src_fps: float, dst_fps: float) -> Rig:
-    """The rig at another frame rate over the same duration (the last key at or before the
-    end): root positions linearly, rotations by slerp. Same rate: unchanged."""
+    """The rig at another frame rate over the same duration: root positions linearly,
+    rotations by slerp, keys at i / dst_fps up to the first at or after the end, which holds
+    the last pose (so no pose is dropped: ceil(duration * dst_fps) + 1 frames). Same rate:
+    unchanged."""
     n = rig.frames
     if n < 2 or abs(src_fps - dst_fps) < 1e-9:
         return rig
-    duration = (n - 1) / src_fps
-    pos = np.arange(int(np.floor(duration * dst_fps + 1e-6)) + 1) / dst_fps * src_fps
+    pos = np.minimum(np.arange(resampled_frames(n, src_fps, dst_fps)) / dst_fps * src_fps, n - 1)
     lo = np.clip(np.floor(pos + 1e-9).astype(int), 0, n - 1)
     hi = np.clip(lo + 1, 0, n - 1)
     w = np.clip(pos - lo, 0.0, 1.0)

@@ -212,8 +212,10 @@ def test_each_preset_reads_back_in_bvhio_within_1mm(real_clips, tmp_path, fps, u
     path = tmp_path / "a.bvh"
     path.write_text(write_bvh(joints, out_fps=fps, units=units, up=up, names=names))
     got, frames, frame_time = bvhio_positions(path, joint_names(names))
-    # The requested rate: frames over the same duration, and the header's Frame Time.
-    assert frames == int(np.floor((len(joints) - 1) / 20 * fps + 1e-6)) + 1
+    # The requested rate: frames over the same duration, rounded up so that the last pose
+    # is kept (the last frame holds it), and the header's Frame Time.
+    assert frames == int(np.ceil((len(joints) - 1) / 20 * fps - 1e-6)) + 1
+    assert np.abs(got[-1] / UNITS[units] @ (Z_UP if up == "z" else np.eye(3)) - joints[-1]).max() < 1e-3
     assert abs(1.0 / frame_time - fps) < 1e-3
     # Undo units and up axis: back to metres, Y up (v_y = Z_UP^T v_z).
     if up == "z":
@@ -226,7 +228,7 @@ def test_each_preset_reads_back_in_bvhio_within_1mm(real_clips, tmp_path, fps, u
     # Every frame is the resampled rig (rotations slerped), and near the straight-line blend.
     want = rig_positions(resample_rig(solve_rig(joints), 20, fps))
     assert np.abs(got - want).max() < 1e-3
-    t = np.arange(frames) / fps * 20
+    t = np.minimum(np.arange(frames) / fps * 20, len(joints) - 1)
     lo = np.minimum(np.floor(t + 1e-9).astype(int), len(joints) - 1)
     hi = np.minimum(lo + 1, len(joints) - 1)
     w = (t - lo)[:, None, None]
