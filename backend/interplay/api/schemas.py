@@ -193,6 +193,9 @@ class MotionListItem(BaseModel):
 
 class MotionList(BaseModel):
     motions: list[MotionListItem] = Field(description="Newest first.")
+    next: str | None = Field(default=None, description="The `after` of the next page (null: "
+                             "this is the last).")
+    total: int = Field(default=0, description="How many motions the client made in all.")
 
 
 class ErrorOut(BaseModel):

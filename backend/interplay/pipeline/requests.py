@@ -20,6 +20,7 @@ from pydantic import (
     model_validator,
 )
 
+from interplay.pipeline.messages import readable_errors
 from interplay.planner.schema import (
     MAX_COORD,
     MAX_PATH_M,
@@ -138,21 +139,3 @@ class GenerationRequest(BaseModel):
         if len(v) > MAX_PROMPT:
             raise ValueError(f"is {len(v)} characters long; the limit is {MAX_PROMPT}")
         return v
-
-
-def readable_errors(errors) -> str:
-    """Pydantic errors as one readable line, e.g. "seconds: Input should be less than or
-    equal to 20; persons: Input should be 1 or 2"."""
-    parts = []
-    for err in errors:
-        loc = [str(x) for x in err.get("loc", ()) if x not in ("body", "query", "path")]
-        msg = str(err.get("msg", "invalid value")).removeprefix("Value error, ")
-        if err.get("type") == "json_invalid":
-            why = err.get("ctx", {}).get("error", "parse error")
-            loc, msg = [], f"request body is not valid JSON ({why})"
-        elif err.get("type") == "missing" and not loc:
-            msg = "a JSON request body is required"
-        elif err.get("type") == "model_attributes_type":
-            msg = "request body must be a JSON object"
-        parts.append(f"{'.'.join(loc)}: {msg}" if loc else msg)
-    return "; ".join(parts) or "invalid request"

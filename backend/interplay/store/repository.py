@@ -157,24 +157,42 @@ class MotionRepository:
                 current = row.parent_id
         return chain[::-1]
 
-    def for_client(self, client_id: str, limit: int = 20) -> list[MotionSummary]:
+    def for_client(self, client_id: str, limit: int = 20,
+                   after: str | None = None) -> list[MotionSummary] | None:
         """The motions `client_id` made (generated, edited, re-run), newest first, at most
         `limit`, each with its first frame (one (22, 3) array per person) for a thumbnail;
-        [] for a malformed id. There is no listing without a client id."""
+        [] for a malformed id. There is no listing without a client id. `after`: the page
+        that follows this motion of the same client (keyset paging: motions made meanwhile
+        neither repeat nor shift it); None when `after` is not one of the client's motions."""
         if not valid_id(client_id):
             return []
         cols = (MotionRow.id, MotionRow.prompt, MotionRow.persons, MotionRow.seconds,
                 MotionRow.frames, MotionRow.parent_id, MotionRow.created_at, MotionRow.edit,
                 MotionRow.joints)
-        stmt = (select(MotionRow).options(load_only(*cols))
-                .where(MotionRow.client_id == client_id)
-                .order_by(MotionRow.created_at.desc(), MotionRow.id).limit(max(0, limit)))
+        stmt = select(MotionRow).options(load_only(*cols)).where(MotionRow.client_id == client_id)
         with Session(self.engine) as session:
+            if after is not None:
+                mark = session.execute(select(MotionRow.created_at).where(
+                    MotionRow.id == after, MotionRow.client_id == client_id)).first() \
+                    if valid_id(after) else None
+                if mark is None:
+                    return None
+                stmt = stmt.where((MotionRow.created_at < mark[0])
+                                  | ((MotionRow.created_at == mark[0]) & (MotionRow.id > after)))
+            stmt = stmt.order_by(MotionRow.created_at.desc(), MotionRow.id).limit(max(0, limit))
             return [MotionSummary(id=r.id, prompt=r.prompt, persons=r.persons, seconds=r.seconds,
                                   frames=r.frames, parent_id=r.parent_id,
                                   created_at=_aware(r.created_at), edit=r.edit,
                                   first_frame=_first_frame(r.joints, r.persons, r.frames))
                     for r in session.scalars(stmt)]
+
+    def count_for_client(self, client_id: str) -> int:
+        """How many motions `client_id` made (0 for a malformed id)."""
+        if not valid_id(client_id):
+            return 0
+        with Session(self.engine) as session:
+            return int(session.scalar(select(func.count()).select_from(MotionRow)
+                                      .where(MotionRow.client_id == client_id)) or 0)
 
     def list(self, limit: int = 50, offset: int = 0) -> list[MotionSummary]:
         """Newest first, without the joints."""

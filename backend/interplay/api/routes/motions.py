@@ -10,6 +10,7 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, HTTPException, Query, Response
 
 from interplay.api.deps import RepoDep
+from interplay.api.filenames import content_disposition, export_name
 from interplay.api.jobs import motion_missing
 from interplay.api.schemas import ERRORS, History, MotionOut, SkeletonOut
 from interplay.motion import skeleton as sk
@@ -75,13 +76,14 @@ def export_motion(motion_id: str, repo: RepoDep,
         from interplay.motion.formats.gltf import MEDIA_TYPE, write_glb
         data = write_glb([p.astype("float64") for p in motion.people], fps=motion.fps, mesh=mesh,
                          name=motion.prompt or "motion")
-        suffix = "" if mesh else "-skeleton"
-        return Response(data, media_type=MEDIA_TYPE, headers={
-            "Content-Disposition": f'attachment; filename="interplay-{motion.id}{suffix}.glb"'})
+        name = export_name(motion.id, motion.prompt, "glb", "" if mesh else "-skeleton")
+        return Response(data, media_type=MEDIA_TYPE,
+                        headers={"Content-Disposition": content_disposition(name)})
     if format == "json":
         body = json.dumps(motion_file(motion), separators=(",", ":"))
-        return Response(body, media_type="application/json", headers={
-            "Content-Disposition": f'attachment; filename="interplay-{motion.id}.json"'})
+        name = export_name(motion.id, motion.prompt, "json")
+        return Response(body, media_type="application/json",
+                        headers={"Content-Disposition": content_disposition(name)})
     if person >= motion.persons:
         raise HTTPException(422, f"person {person} does not exist: this motion has "
                                  f"{motion.persons} person(s), numbered from 0")
@@ -90,9 +92,10 @@ def export_motion(motion_id: str, repo: RepoDep,
     people = [p.astype("float64") for p in motion.people]
     text = write_bvh(people[person], fps=motion.fps, out_fps=int(fps), units=units, up=up, names=names,
                      floor=floor_height(people))
-    return Response(text, media_type="text/plain; charset=utf-8", headers={
-        # the file names people as the studio does: person=0 is Person 1, "…-person1.bvh"
-        "Content-Disposition": f'attachment; filename="interplay-{motion.id}-person{person + 1}.bvh"'})
+    # the file names people as the studio does: person=0 is Person 1, "…-person1.bvh"
+    name = export_name(motion.id, motion.prompt, "bvh", f"-person{person + 1}")
+    return Response(text, media_type="text/plain; charset=utf-8",
+                    headers={"Content-Disposition": content_disposition(name)})
 
 
 @router.get("/skeleton", response_model=SkeletonOut)
