@@ -10,6 +10,7 @@ import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
 import { reactRequest } from "./directing/react";
 import { fromHistory, moveTo, pushVersion } from "./directing/versions";
 import { FPS, frames, playhead, useStudio, type StudioState } from "./store";
+import { copyCheck, resetCopyCheck, verifyCopy } from "./playback/verify";
 
 let stream: StreamHandle | null = null;
 /** A react job keeps the actor on stage until its first frames arrive; then the buffer is
@@ -48,7 +49,16 @@ function handleEvent(ev: StreamEvent): void {
       useStudio.setState({ frame: 0, playing: true });
     }
     if (ev.type === "frames") frames.setFrames(ev.start, ev.people, ev.total);
-    else if (ev.type === "highlights") frames.setHighlights(ev);
+    else if (ev.type === "replace") {
+      // frames changed after they were streamed (a correction, the pair pass, a path)
+      frames.setFrames(ev.start, ev.people);
+      copyCheck.replaced += ev.people[0]?.length ?? 0;
+    } else if (ev.type === "highlights") frames.setHighlights(ev);
+    else if (ev.type === "restart") {
+      // the job runs again from its start: what the earlier attempt streamed goes
+      resetCopyCheck();
+      pendingPersons = useStudio.getState().stream.mode === "react" ? 2 : FROM_FRAMES;
+    }
   } catch (err) {
     ev = { type: "error", message: `bad stream data: ${message(err)}` };
     stream?.close();
@@ -72,6 +82,8 @@ function handleEvent(ev: StreamEvent): void {
     stream = null;
   } else if (ev.type === "done") {
     stream = null;
+    // the page's copy against the stored frames: any frame that differs is reloaded
+    void verifyCopy(frames, ev, getMotion).catch((err) => fail(err));
     useStudio.setState({ motionId: ev.motion_id, versions: fromHistory([ev.motion_id], ev.motion_id) });
     showInUrl(ev.motion_id);
     void refreshLibrary();
@@ -123,6 +135,7 @@ function handleReactEnd(ev: StreamEvent, actorId: string | null, intent: string 
   stream = null;
   pendingPersons = null;
   if (ev.type === "done") {
+    void verifyCopy(frames, ev, getMotion).catch((err) => fail(err));
     useStudio.setState((s) => ({
       motionId: ev.motion_id,
       motionPersons: 2,
@@ -177,6 +190,7 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
   window.history.pushState(null, "", resumeUrl(job.job_id, job.motion_id));
   rememberRequest(job.job_id, req);
   frames.reset(req.persons);
+  resetCopyCheck();
   playhead.pos = 0;
   useStudio.setState({
     stream: { ...startStream(null, job.job_id), path: Boolean(req.trajectory) },
@@ -224,6 +238,7 @@ export async function resumeJob(jobId: string, motionId: string | null): Promise
   stream?.close();
   pendingPersons = FROM_FRAMES;
   frames.reset(1);
+  resetCopyCheck();
   playhead.pos = 0;
   // this browser sent it: the form shows the request at once (else: from the plan, below)
   const sent = recalledRequest(status.job_id);

@@ -4,6 +4,7 @@ import { useLibrary } from "./library";
 import { figureStats, useFigure } from "./figure";
 import { viewStats } from "./scene/views";
 import { MARK_STRIDE } from "./scene/overlaps";
+import { copyCheck, type CopyCheck } from "./playback/verify";
 
 export interface BvhSummary {
   bones: number;
@@ -41,6 +42,8 @@ export interface InterplayTestHook {
   readonly library: string[];
   /** Joints ([x, y, z] × 22) of person p at frame t of the buffer, or null. */
   frameJoints(person: number, frame: number): number[][] | null;
+  /** The check of the page's frames against the stored motion at `done` (playback/verify.ts). */
+  readonly copyCheck: CopyCheck;
   /** The figure chosen (mannequin / character), its status, what is drawn and how many
    * characters are made. */
   readonly figure: { figure: string; status: string; shown: string; characters: number };
@@ -136,6 +139,9 @@ export function installTestHook(target: Window = window): void {
     },
     get library() {
       return useLibrary.getState().items.map((m) => m.id);
+    },
+    get copyCheck() {
+      return { ...copyCheck };
     },
     frameJoints(person, t) {
       if (person >= frames.persons || t < 0 || t >= frames.received) return null;

@@ -1,8 +1,10 @@
 """The job stream's events, one pydantic model each: what a WebSocket client receives, in
 order (docs/api.md):
 
-    plan → (segment, (frames, highlights)*, review, correction*, …, segment)* → metrics → done
-    or, on failure or cancellation, … → error (with `stage`, or `cancelled: true`).
+    plan → (segment, (frames | replace, highlights)*, review, correction*, …, segment)*
+        → metrics → done
+    or, on failure or cancellation, … → error (with `stage`, or `cancelled: true`);
+    a job whose process died and that runs again: … → restart → plan → … (from its start).
 
 The TypeScript `StreamEvent` union (frontend/src/api/types.ts) mirrors these models; a test
 checks that both sides name the same events and fields. The pipeline emits plain dicts
@@ -50,6 +52,17 @@ class FramesEvent(_Event):
     people: list[list[list[list[float]]]]    # per person: [[[x, y, z] × 22] × n]
 
 
+class ReplaceEvent(_Event):
+    """Frames already streamed, changed: a correction (`segment` names it), the pair pass,
+    the interaction review, a path (`trajectory`), or `sync` (any other change found at the
+    end). Followed by their `highlights`. The client puts them in place of the old ones."""
+    type: Literal["replace"] = "replace"
+    start: int
+    people: list[list[list[list[float]]]]    # per person: [[[x, y, z] × 22] × n]
+    cause: str                               # correction | pair_pass | interaction | trajectory | sync
+    segment: int | None
+
+
 class HighlightsEvent(_Event):
     type: Literal["highlights"] = "highlights"
     start: int
@@ -91,9 +104,24 @@ class MetricsEvent(_Event):
 
 
 class DoneEvent(_Event):
+    """The motion is stored. `digest` / `frame_digests` (`api.digest`) are those of the stored
+    frames: a client compares its copy and reloads the frames that differ. An edit's done
+    (not streamed) has none."""
+    OMIT_NONE = ("digest", "frame_digests")
     type: Literal["done"] = "done"
     motion_id: str
     frames: int
+    digest: str | None = None
+    frame_digests: list[str] | None = None
+
+
+class RestartEvent(_Event):
+    """The process running the job stopped (killed, crashed, restarted) and the job was queued
+    again: what follows is attempt `attempt` from its start (plan, frames, …). A client drops
+    what the earlier attempt streamed."""
+    type: Literal["restart"] = "restart"
+    attempt: int
+    reason: str
 
 
 class ErrorEvent(_Event):
@@ -104,12 +132,13 @@ class ErrorEvent(_Event):
     cancelled: bool | None = None
 
 
-StreamEvent = Annotated[Union[PlanEvent, SegmentEvent, FramesEvent, HighlightsEvent, ReviewEvent,
-                              CorrectionEvent, MetricsEvent, DoneEvent, ErrorEvent],
+StreamEvent = Annotated[Union[PlanEvent, SegmentEvent, FramesEvent, ReplaceEvent, HighlightsEvent,
+                              ReviewEvent, CorrectionEvent, MetricsEvent, DoneEvent, RestartEvent,
+                              ErrorEvent],
                         Field(discriminator="type")]
-EVENTS: tuple[type[_Event], ...] = (PlanEvent, SegmentEvent, FramesEvent, HighlightsEvent,
-                                    ReviewEvent, CorrectionEvent, MetricsEvent, DoneEvent,
-                                    ErrorEvent)
+EVENTS: tuple[type[_Event], ...] = (PlanEvent, SegmentEvent, FramesEvent, ReplaceEvent,
+                                    HighlightsEvent, ReviewEvent, CorrectionEvent, MetricsEvent,
+                                    DoneEvent, RestartEvent, ErrorEvent)
 _ADAPTER: TypeAdapter = TypeAdapter(StreamEvent)
 
 
@@ -122,6 +151,12 @@ def frames_event(start: int, total: int, people: list) -> dict:
     """Frames of every person from `start` (joints already as nested lists). Built without
     re-validating thousands of floats per chunk: the runner made them from arrays."""
     return FramesEvent.model_construct(start=start, total=total, people=people).dump()
+
+
+def replace_event(start: int, people: list, cause: str, segment: int | None) -> dict:
+    """Frames already streamed, again (joints already as nested lists)."""
+    return ReplaceEvent.model_construct(start=start, people=people, cause=cause,
+                                        segment=segment).dump()
 
 
 def highlights_event(start: int, window: list, skip: int, persons: int) -> dict:

@@ -31,6 +31,7 @@ from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
 from interplay.pipeline import pair_pass, pair_review
 from interplay.pipeline.segment_source import Cancelled, SegmentSource
+from interplay.pipeline.sent import OnReplace, SentFrames
 from interplay.review.reviewer import CannotApply, correct
 from interplay.trajectory.apply import TrajectoryConfig
 
@@ -122,8 +123,13 @@ def _trajectories(people: np.ndarray, plan: GenerationPlan, trajectory: dict | N
 def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None],
                 on_frames: Callable[[int, list[np.ndarray]], None],
                 cancelled: Callable[[], bool] = lambda: False, trajectory: dict | None = None,
-                evaluator=None, cfg: OrchestratorConfig = DEFAULT) -> Outcome:
+                evaluator=None, cfg: OrchestratorConfig = DEFAULT,
+                on_replace: OnReplace | None = None) -> Outcome:
     stage = "plan"
+    # Everything streamed goes through `sent`: frames changed after they were sent (a
+    # correction, the pair pass, a path, a re-draw's seams and floor pass) go out again, as
+    # replacements with their cause when the caller takes them (`on_replace`).
+    sent = SentFrames(on_frames, on_replace)
     try:
         plan = generator.plan(req)
         emit({"type": "plan", "plan": plan.to_json()})
@@ -137,14 +143,17 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
             i, a, b = seg.index, seg.start, seg.end
             emit({"type": "segment", "index": i, "status": "generating", "generator": kind})
             stage = "generate"
-            source.fill(b, on_frames, cancelled)
-            done = pair_pass.resolve_segment(source.people, source.plan, seg, on_frames)
+            source.fill(b, sent, cancelled)
+            done = pair_pass.resolve_segment(source.people, source.plan, seg,
+                                             sent.by("pair_pass", i))
             resolutions += [done] if done else []
             if cfg.review and cfg.rounds > 0 and b - a >= 3:
                 stage = "review"
                 history.append(_review_segment(generator, source, seg, spam, evaluator, cfg,
-                                               emit, on_frames, plan.seed, done is not None,
-                                               pair_checked))
+                                               emit, sent.by("correction", i), plan.seed,
+                                               done is not None, pair_checked))
+                # a re-draw moves frames beyond the segment too (seams, the floor pass)
+                sent.sync(source.people[:, :source.written], "correction", i)
             if cancelled():
                 raise Cancelled()
             emit({"type": "segment", "index": i, "status": "done", "generator": kind})
@@ -155,7 +164,8 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
             last = max((r["round"] for h in history if h["segment"] == plan.segments[-1].index
                         for r in h["reviews"]), default=-1)
             people, source.plan, interaction = pair_review.review_interaction(
-                generator, req, source.plan, people, emit, on_frames, first_round=last + 1,
+                generator, req, source.plan, people, emit, sent.by("interaction"),
+                first_round=last + 1,
                 tries=cfg.rounds)
             if interaction is not None:      # the stored timeline shows it on the last segment
                 entry = next((h for h in history if h["segment"] == plan.segments[-1].index), None)
@@ -167,8 +177,9 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         first = _trajectories(people, source.plan, trajectory)
         if first is not None:
             for s in range(first, people.shape[1], CHUNK):
-                on_frames(s, [p[s:s + CHUNK] for p in people])
-        resolutions += pair_pass.resolve_motion(people, source.plan, on_frames)
+                sent.send(s, [p[s:s + CHUNK] for p in people], "trajectory")
+        resolutions += pair_pass.resolve_motion(people, source.plan, sent.by("pair_pass"))
+        sent.sync(people, "sync")      # nothing, unless a stage changed frames unsent
         plan = source.plan
         if trajectory is not None:
             plan = plan.model_copy()

@@ -70,7 +70,11 @@ export function reduceStream(state: StreamState, event: StreamEvent): StreamStat
       };
     }
     case "highlights":
+    case "replace":
       return state;
+    case "restart":
+      // the job runs again from its start: its stream follows with a new plan, new frames
+      return { ...startStream(state.motionId, state.jobId, state.mode, state.actorId), phase: "generating", path: state.path };
     case "metrics":
       return { ...state, metrics: event.metrics };
     case "done":

@@ -160,6 +160,9 @@ export type StreamEvent =
   | { type: "plan"; plan: Plan }
   | { type: "segment"; index: number; status: "generating" | "done"; generator: string }
   | { type: "frames"; start: number; total: number; people: PersonFrames[] }
+  /** Frames already streamed, changed (a correction, the pair pass, a path, …): they take the
+   * old ones' place. `cause`: correction | pair_pass | interaction | trajectory | sync. */
+  | { type: "replace"; start: number; people: PersonFrames[]; cause: string; segment: number | null }
   | {
       type: "highlights";
       start: number;
@@ -195,7 +198,10 @@ export type StreamEvent =
       reason?: string;
     }
   | { type: "metrics"; metrics: Metrics }
-  | { type: "done"; motion_id: string; frames: number }
+  /** The motion is stored; the digests are the stored frames' (api/digest.ts). */
+  | { type: "done"; motion_id: string; frames: number; digest?: string; frame_digests?: string[] }
+  /** The job's process stopped and the job runs again from its start (attempt `attempt`). */
+  | { type: "restart"; attempt: number; reason: string }
   | { type: "error"; message: string; stage?: string; cancelled?: boolean };
 
 export type ExportFormat = "bvh" | "glb" | "json";

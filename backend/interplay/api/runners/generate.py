@@ -2,8 +2,9 @@
 worker thread, its frames turned into `frames` and `highlights` events as they become final,
 then metrics, the stored motion and `done`.
 
-A repeated start (a corrected segment, a moved path) replaces those frames, in the buffer the
-runner stores and in the client's.
+Frames changed after they were streamed (a correction, the pair pass, a path) go out again as
+`replace` events with their cause; `done` carries the stored frames' digests (`api.digest`), so
+the client can check its copy.
 """
 
 from __future__ import annotations
@@ -12,7 +13,15 @@ from collections.abc import Callable
 
 import numpy as np
 
-from interplay.api.events import DoneEvent, MetricsEvent, frames_event, from_pipeline, highlights_event
+from interplay.api.digest import frame_digests, motion_digest
+from interplay.api.events import (
+    DoneEvent,
+    MetricsEvent,
+    frames_event,
+    from_pipeline,
+    highlights_event,
+    replace_event,
+)
 from interplay.generators.base import Generator, Request
 from interplay.motion.metrics import clip_metrics
 from interplay.motion.skeleton import FPS, NUM_JOINTS
@@ -49,6 +58,14 @@ class GenerateRunner:
             self.min_dist += [None] * grow
 
     def on_frames(self, start: int, chunk: list[np.ndarray]) -> None:
+        self._frames(start, chunk, None)
+
+    def on_replace(self, start: int, chunk: list[np.ndarray], cause: str,
+                   segment: int | None) -> None:
+        self._frames(start, chunk, (cause, segment))
+
+    def _frames(self, start: int, chunk: list[np.ndarray],
+                replace: tuple[str, int | None] | None) -> None:
         if self.closing():
             raise Cancelled()
         chunk = [np.asarray(c, dtype=np.float32) for c in chunk]
@@ -60,8 +77,9 @@ class GenerateRunner:
         self._grow(end)
         self.people[:, start:end] = np.stack(chunk)
         self.written = max(self.written, end)
-        self.job.push(frames_event(start, max(self.total, self.written),
-                                   [joints_list(c) for c in chunk]))
+        lists = [joints_list(c) for c in chunk]
+        self.job.push(frames_event(start, max(self.total, self.written), lists)
+                      if replace is None else replace_event(start, lists, *replace))
         # One frame of context before the chunk, so velocity-based contacts are defined.
         ctx = 1 if start > 0 else 0
         hl = highlights_event(start, [p[start - ctx:end] for p in self.people], ctx, self.persons)
@@ -77,7 +95,8 @@ class GenerateRunner:
                       seed=spec.seed)
         out = orchestrate(self.generator, req, lambda e: job.push(from_pipeline(plain(e))),
                           self.on_frames, cancelled=lambda: job.cancelled or self.closing(),
-                          trajectory=spec.trajectory, evaluator=default_evaluator())
+                          trajectory=spec.trajectory, evaluator=default_evaluator(),
+                          on_replace=self.on_replace)
         if self.written == 0:
             raise StageError("generate", "the generator produced no frames")
         final = [p[:self.written] for p in out.people]
@@ -96,4 +115,6 @@ class GenerateRunner:
                              client_id=spec.client_id)
         except Exception as exc:
             raise StageError("store", f"{type(exc).__name__}: {exc}") from exc
-        job.push(DoneEvent(motion_id=job.motion_id, frames=w).dump())
+        digests = frame_digests(final)
+        job.push(DoneEvent(motion_id=job.motion_id, frames=w, digest=motion_digest(digests),
+                           frame_digests=digests).dump())

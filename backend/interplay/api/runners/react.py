@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from interplay.api.digest import frame_digests, motion_digest
 from interplay.api.events import (
     DoneEvent,
     MetricsEvent,
@@ -85,4 +86,6 @@ def react_job(job, repo, guidance: bool = True, chunk: int = CHUNK) -> None:
                     client_id=spec.client_id)
     except Exception as exc:
         raise StageError("store", f"{type(exc).__name__}: {exc}") from exc
-    job.push(DoneEvent(motion_id=job.motion_id, frames=total).dump())
+    digests = frame_digests(final)
+    job.push(DoneEvent(motion_id=job.motion_id, frames=total, digest=motion_digest(digests),
+                       frame_digests=digests).dump())
