@@ -9,21 +9,20 @@ by trial (never by window) and captions.
 from __future__ import annotations
 
 import argparse
-import hashlib
 import sys
 import time
 from pathlib import Path
 
 from interplay.data.card import write_card
 from interplay.data.licences import BANDAI_NAMCO, CMU, DEEPMIMIC, commercial_only
-from interplay.motion.clip import DATA_DIR, Caption, Clip, save_clips
+from interplay.data.splits import SPLIT_SHARES, _stable_rank, add_captions, stratified_split
+from interplay.motion.clip import DATA_DIR, Clip, save_clips
 from interplay.motion.labels import cmu_prompt, label_family
 
 REPO = Path(__file__).resolve().parents[3]
 DEFAULT_SOURCE = REPO.parent / "shared" / "data"
 # HDM05's actor "mm" is held out entirely as the test set: unseen performer, every class.
 HDM05_TEST_ACTOR = "mm"
-SPLIT_SHARES = {"test": 0.15, "val": 0.10}
 # Composed two-person clips per kind and split (interplay.motion.pair.compose), 4 s each; a split's
 # pairs are composed only from that split's real single-person clips.
 COMPOSED_PER_KIND = {"train": 24, "val": 4, "test": 4}
@@ -31,24 +30,6 @@ COMPOSED_SECONDS = 4.0
 COMPOSE_NOTES: list[str] = []
 # Raw files left out of the set, with the reasons (broken root tracks …); listed in the card.
 SKIPPED: list[tuple[str, list[str]]] = []
-
-
-def _stable_rank(key: str) -> str:
-    return hashlib.sha1(key.encode()).hexdigest()
-
-
-def stratified_split(ids_by_family: dict[str, list[str]], min_test: int = 1) -> dict[str, str]:
-    """Trial id → split. Within each family, trials are ordered by a stable hash; the first
-    15% (at least one when the family has ≥ 3 trials) go to test, the next 10% to val."""
-    out = {}
-    for ids in ids_by_family.values():
-        ranked = sorted(ids, key=_stable_rank)
-        n = len(ranked)
-        n_test = max(min_test if n >= 3 else 0, round(n * SPLIT_SHARES["test"]))
-        n_val = max(1 if n >= 6 else 0, round(n * SPLIT_SHARES["val"]))
-        for i, trial in enumerate(ranked):
-            out[trial] = "test" if i < n_test else "val" if i < n_test + n_val else "train"
-    return out
 
 
 def build_cmu_bvh(src: Path) -> list[Clip]:
@@ -257,19 +238,6 @@ def assign_splits(clips: list[Clip]) -> None:
             c.split = split[c.id]
 
 
-def add_captions(clips: list[Clip]) -> None:
-    from interplay.motion.posecodes import caption_clip
-
-    for c in clips:
-        caps: list[Caption] = []
-        for person, joints in enumerate(c.people):
-            for cap in caption_clip(joints):
-                if len(c.people) > 1:
-                    cap = Caption(cap.start, cap.end, cap.part, f"person {person + 1}: {cap.text}")
-                caps.append(cap)
-        c.captions = caps
-
-
 def build_composed(clips: list[Clip], per_kind: dict[str, int] = COMPOSED_PER_KIND) -> list[Clip]:
     """Synthetic two-person clips composed from the real clips (after their splits are set):
     train pairs from train bases only, val/test pairs from val/test bases. Kinds a split has no
@@ -301,6 +269,9 @@ BUILDERS = {"cmu-bvh": build_cmu_bvh, "cmu-salsa": build_salsa, "hdm05": build_h
 
 
 def main(argv: list[str] | None = None) -> int:
+    if argv and "--staged" in argv:  # sources read from repository snapshots: data/staged.py
+        from interplay.data.staged import main as staged_main
+        return staged_main([a for a in argv if a != "--staged"])
     ap = argparse.ArgumentParser(prog="interplay data build", description=__doc__)
     ap.add_argument("--source", type=Path, default=DEFAULT_SOURCE, help="raw data folder (../shared/data)")
     ap.add_argument("--out", type=Path, default=DATA_DIR, help="output folder (models/data)")

@@ -6,6 +6,8 @@ from collections import Counter, defaultdict
 from collections.abc import Sequence
 from pathlib import Path
 
+from interplay.data.hunt import SOURCES_CONSIDERED
+from interplay.data.pairs import pair_contact_lines
 from interplay.motion.clip import Clip
 from interplay.motion.labels import label_family
 from interplay.motion.skeleton import FPS
@@ -120,11 +122,12 @@ def _family_lines(clips: list[Clip]) -> list[str]:
     return lines + [""]
 
 
-def _rate_lines(clips: list[Clip]) -> list[str]:
+def _rate_lines(clips: list[Clip],
+                sources: Sequence[str] = ("bandai-namco", "cmu-iclone", "cmu-asfamc", "deepmimic")) -> list[str]:
     """Frame rates of the newer sources: what was stated, what the motion says, where they
     disagree (the clips recorded `checks.decide_rate`'s evidence)."""
     lines = []
-    for source in ("bandai-namco", "cmu-iclone", "cmu-asfamc", "deepmimic"):
+    for source in sources:
         group = [c for c in clips if c.source == source]
         if not group:
             continue
@@ -211,5 +214,5 @@ def write_card(clips: list[Clip], out_dir: Path, skipped: Sequence[tuple[str, li
     lines += ["", "## Synthetic data", "",
               f"{sum(c.synthetic for c in clips)} synthetic clips (composed pairs are marked `synthetic: true`"
               " and kept out of the evaluation's real reference set).", *_composed_lines(clips, composed_notes),
-              "", LICENCES_TEXT]
+              "", *pair_contact_lines(clips), LICENCES_TEXT, SOURCES_CONSIDERED]
     (out_dir / "README.md").write_text("\n".join(lines))

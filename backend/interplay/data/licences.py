@@ -52,7 +52,7 @@ LICENCES: dict[str, Licence] = {lic.name: lic for lic in (CMU, HDM05, BANDAI_NAM
 # Source → its licence (composed clips: per clip, their bases').
 SOURCE_LICENCE: dict[str, Licence] = {
     "cmu-bvh": CMU, "cmu-salsa": CMU, "cmu-8action": CMU, "cmu-iclone": CMU, "cmu-asfamc": CMU,
-    "hdm05": HDM05, "bandai-namco": BANDAI_NAMCO, "deepmimic": DEEPMIMIC,
+    "hdm05": HDM05, "bandai-namco": BANDAI_NAMCO, "bandai-namco-2": BANDAI_NAMCO, "deepmimic": DEEPMIMIC,
 }
 
 

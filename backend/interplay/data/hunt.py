@@ -1,0 +1,45 @@
+"""The data card's "Sources considered" section: where more real capture was looked for (issue 25),
+what each candidate holds, its licence and what that means for the data and for weights trained
+on it, and why it was kept, staged or left out. Written into models/data/README.md by the card."""
+
+SOURCES_CONSIDERED = """\
+## Sources considered
+
+Looked for (issue 25) with the search tool (code, docs, pages corpora; repository and path look-ups) and
+snapshot fetches, for exercise, seated actions, climbing/crawling, martial arts/boxing, object handling,
+everyday gestures and chores, emotions/styles and real two-person interaction beyond dance.
+"Snapshot" limits that decided several rows: a fetchable snapshot is at most 500 MiB and lacks files of
+4 MiB and more.
+
+| source (where) | what it has | licence | data / weights | outcome |
+|---|---|---|---|---|
+| CMU Graphics Lab full database, ASF→BVH conversion (una-dinosauria/cmu-mocap, 2,057 BVH files indexed, 120 fps) | every CMU subject: exercise and boxing (13, 14: jumping jacks, squats, stretches, boxing, climb ladder, drink soda), sitting and object handling (15, 111, 113–115: sit in chair, get up, pick up box, walk and carry), chores and emotions pantomimed (79, 80: chopping wood, brushing teeth, crying), martial arts (135, 144), get-ups (140), emotional styles (142), catch/throw and ladders (143), and the **two-person trials**: 18/19 (handshake, pulls, conversation, quarrel, sit together), 20/21 (link arms, high-five, low-five, ring-around-the-rosey, whip, tag), 22/23 (pull up, comfort, shoulder rub, stumble into, pass soda, squats/jumping jacks in turn, arm wrestle, stool threat, keys/wallet throw-catch), 33/34 (football throw-catch) | CMU terms: free for research and commercial products, not resold as data; acknowledge | commercial use allowed for data and weights; keep the acknowledgement | **not ingested**: the snapshot is 789 MB, over the 500 MiB fetch limit; single files are readable only 16 kB at a time (a 2.5 s trial is 231 kB), too few look-ups for more than a sample. The richest gain left: needs a copy in ../shared/data (see below) |
+| LeeChunHei/CMU-Mocap-for-AMP-ASE (2,170 CMU trials retargeted to the AMP humanoid, .npy) | CMU, all subjects | CMU terms (no licence file of its own) | as CMU | not ingested: snapshot 779 MB, over the fetch limit |
+| Przestr/motion-capture, beemsoft/webxr-handtracking-playground, DragonForgedTheArtist/IClone-CMU-Mocap | CMU subsets already in ../shared/data (cmu-bvh, cmu-salsa, cmu-iclone) | CMU terms | as CMU | already in the main set; nothing new there |
+| 414Group/Rotate, a "better-endfield" motions folder, YuanchengLi-Kevin/cmu-mocap-*, cyun9601/CMU-MOCAP-Data, gpdevspace/JEPA_CMU_MoCap, ywchao/baselines, daylanKifky/CMU-Motion-Capture-Database-to-Blender | one or two CMU trials each (18_01/19_01 handshake) or only code that downloads CMU | CMU terms / none | – | nothing worth a source (a single handshake pair at most) |
+| **Bandai Namco Research motion dataset 2** (BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @ 74ead3b) | 2,902 clips, 3 actors: walk, turns, run, wave and raise one/both hands in 7 styles (active, elderly, exhausted, feminine, masculine, normal, youthful) | CC BY-NC 4.0 | **non-commercial only**, for data and weights; attribute | **staged**: the 2,482 clips ../shared/data lacks, `models/data/staged/bandai-namco-2.npz` (opt-in, below) |
+| LAFAN1 (ubisoft/ubisoft-laforge-animation-dataset) | 77 sequences, 5 actors, ~4.6 h: walk, run, jumps, dance, fight, fight-and-sports, obstacles, **ground (crawl, lie, get up)**, sprint, aiming, push and stumble | CC BY-NC-ND 4.0 (license.txt read) | ND: "You do not have permission … to Share Adapted Material" — our retargeted, resampled clips are adapted material | **left out**: the processed data may not be shared (and `lafan1.zip` is over the 4 MiB snapshot limit anyway) |
+| NuiSI (souljaboy764/nuisi_dataset) | real two-person skeletons from a depth camera (Nuitrack): wave, handshake, high-five, fist-bumps, clap-fist | **no licence** (README cites MILD, Prasad et al. 2022; no LICENSE file) | all rights reserved by default | **left out**: no permission to redistribute; also 15–19 Kinect-style joints without feet orientation |
+| Bütepage et al. HRI data (jbutepage/human_robot_interaction_data) | two-person handshake, waving, rocket and parachute fist-bumps (text skeletons) | **no licence** (README is one line) | all rights reserved | **left out**: no permission |
+| SBU Kinect Interaction | two-person Kinect skeletons: approach, depart, push, kick, punch, exchange object, hug, handshake | academic download page (terms not readable here); no repository copy found | research only at best | left out: no redistributable copy, research-only terms |
+| InterAct (hku-cg), LongInter, InterHuman, Inter-X, CHI3D, ExPI, DUET, AIR-Act2Act, CMU Panoptic | two-person capture (daily scenarios, kicks, hugs, Lindy hop …) | CC BY-NC-SA 4.0 (InterAct), research-only or unstated (the others) | NC-SA / research only | left out: non-commercial share-alike or research-only; none has a fetchable repository copy of the data |
+| 100STYLE (Mason et al.) | 100 locomotion styles (BVH), incl. emotions | CC BY 4.0 as its page states (not read here) | commercial with attribution | not found in any fetchable repository (hosted outside the reachable stores); a good next source for styles |
+| HumanAct12, NTU RGB+D, UESTC, HumanML3D/AMASS captions | action sets (exercise, lifting, sitting …) | research only / AMASS licence (non-commercial, no redistribution) | – | left out |
+| Mixamo, Reallusion ActorCore samples | many actions | not redistributable | – | left out (brief) |
+| KIT whole-body, MoVi, Total Capture, HDM05 full set | exercise, object handling, everyday actions | various (HDM05 CC BY-SA 3.0 — only 11 classes are in a fetchable repository, already in the main set) | – | nothing new reachable |
+| CC0 animation libraries ("free BVH", Truebones, outworldz CMU mirror) | CMU re-exports or hand-keyed clips | CMU terms or unclear | – | only CMU again, or no data in a reachable repository |
+
+What would close the gaps: CMU's own files. A copy of una-dinosauria/cmu-mocap's BVH for subjects 13–15,
+18–23, 33/34, 56, 75, 79, 80, 86, 90, 111, 113–115, 135, 137, 140–144 (exercise, boxing, climbing,
+sitting, carrying, chores, emotions, martial arts, get-ups, two-person) under ../shared/data would add roughly 2–4 h of single-person
+capture and ~0.5 h of real two-person capture in 15+ interaction kinds under CMU's commercial-friendly
+terms; the build then needs a retargeter for that conversion's ASF-named skeleton (Hips, LHipJoint,
+LeftUpLeg …, the same bones as `cmu_acclaim`).
+
+### Staged sources (opt-in, `models/data/staged/`)
+`interplay data build --staged` reads named snapshots from `/work/.mirror` (fetch step and manifest in
+`models/data/staged/README.md`) and writes `models/data/staged/`: its own `index.json`, one npz per
+source and a card. The app does not load it (`default_clips()` reads `models/data/index.json` only), so
+retrieval, the behaviour fixtures and the trained models are unchanged until a later switch-over moves a
+staged source into the main build and regenerates fixtures and evaluations.
+"""

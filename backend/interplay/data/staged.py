@@ -1,0 +1,144 @@
+"""`interplay data build --staged`: sources read from named repository snapshots (`mirror`),
+written to `models/data/staged/` (its own index.json, one npz per source, README.md card with
+the provenance manifest).
+
+Staged sources are opt-in at run time: the app's `default_clips()` reads `models/data/index.json`
+only, so nothing here changes retrieval, the behaviour fixtures or the trained models until a
+later step moves a staged source into the main build (and regenerates fixtures and evaluations).
+Load them explicitly with `interplay.motion.clip.load_clips(STAGED_DIR)`.
+
+Sources:
+- `bandai-namco-2`: the rest of Bandai Namco Research motion dataset 2 (the 2,482 clips of its
+  2,902 that ../shared/data/bandai-namco/dataset-2 does not hold): walk, turns, run, waves and
+  raised hands in 7 styles, 3 actors; CC BY-NC 4.0 (non-commercial), the same retargeter as
+  `bandai-namco` (`interplay.motion.retarget.bandai_namco`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from interplay.data.card import _family_lines, _hours, _rate_lines
+from interplay.data.licences import BANDAI_NAMCO
+from interplay.data.mirror import Snapshot, SnapshotMissing, mirror_root
+from interplay.data.splits import _stable_rank, add_captions, stratified_split
+from interplay.motion.clip import DATA_DIR, Clip, save_clips
+from interplay.motion.labels import label_family
+
+STAGED_DIR = DATA_DIR / "staged"
+DEFAULT_SOURCE = DATA_DIR.parents[2] / "shared" / "data"   # ../shared/data, as the main build
+
+BANDAI = Snapshot(
+    repo="BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset",
+    commit="74ead3ba1ae4696404e6086233779f60de8bf9ef",
+    path="dataset/Bandai-Namco-Research-Motiondataset-2",
+    licence="CC BY-NC 4.0 (dataset/Bandai-Namco-Research-Motiondataset-2/LICENSE)")
+
+SNAPSHOTS = {"bandai-namco-2": BANDAI}
+SKIPPED: list[tuple[str, list[str]]] = []
+
+
+def build_bandai_more(raw: Path, shared: Path) -> list[Clip]:
+    """Dataset 2's clips from the extracted snapshot folder `raw` (its data/ and cfg/), less
+    those ../shared/data/bandai-namco/dataset-2 holds (the main build's `bandai-namco`)."""
+    from interplay.motion.retarget.bandai_namco import bandai_prompt, load_bandai, read_labels
+
+    have = {p.name for p in (shared / "bandai-namco" / "dataset-2" / "data").glob("*.bvh")}
+    clips = []
+    for path in sorted((raw / "data").glob("*.bvh")):
+        if path.name in have:
+            continue
+        rel = f"{BANDAI.path}/data/{path.name}"
+        labels = read_labels(path)
+        joints, offsets, meta = load_bandai(path)
+        meta.update({"file": rel, "repository": BANDAI.repo, "commit": BANDAI.commit, **labels})
+        if meta["defects"]:
+            SKIPPED.append((rel, meta["defects"]))
+            continue
+        clips.append(Clip(id=f"bandai2:{path.stem}", source="bandai-namco-2", people=[joints],
+                          offsets=[offsets], label=f"{labels['content']} ({labels['style']})",
+                          prompt=bandai_prompt(labels["content"], labels["style"]),
+                          licence=BANDAI_NAMCO.name, meta=meta))
+    return clips
+
+
+def assign_staged_splits(clips: list[Clip]) -> None:
+    """By take within each content (as the main build splits Bandai Namco): 15% test, 10% val."""
+    groups: dict[str, list[str]] = {}
+    for c in clips:
+        groups.setdefault(f"{c.source}:{c.meta.get('content', label_family(c.prompt))}", []).append(c.id)
+    split = stratified_split(groups)
+    for c in clips:
+        c.split = split.get(c.id, "train")
+
+
+def write_staged_card(clips: list[Clip], out: Path) -> None:
+    lines = ["# Staged capture data (models/data/staged)", "",
+             "Written by `interplay data build --staged` (`backend/interplay/data/staged.py`) from named",
+             "repository snapshots; **not loaded by the app** (`default_clips()` reads `models/data/index.json`",
+             "only). Same processing as the main set (22 joints, 20 fps, fixed bones, canonical frame).", "",
+             "## Provenance manifest", "", "| source | repository | commit | path | licence | clips | hours |",
+             "|---|---|---|---|---|---|---|"]
+    for source, snap in SNAPSHOTS.items():
+        group = [c for c in clips if c.source == source]
+        frames = sum(p.shape[0] for c in group for p in c.people)
+        lines.append(f"| {source} | {snap.repo} | `{snap.commit}` | `{snap.path}` | {snap.licence} | "
+                     f"{len(group)} | {_hours(frames):.2f} |")
+    lines += ["", "Fetch step: the search tool's `fetch github:<repository>` puts a bare git directory at",
+              "`/work/.mirror/<owner>+<name>/repo`; the build reads the commit above from it (`git cat-file`)",
+              "and stops with a message naming this step when it is absent.", "",
+              "## Frame rates", "", *[f"- {n}" for n in _rate_lines(clips, tuple(SNAPSHOTS))], ""]
+    if SKIPPED:
+        lines += ["## Left out", "", *[f"- `{f}`: {'; '.join(r)}" for f, r in SKIPPED], ""]
+    lines += _family_lines(clips)
+    lines += ["## Split (by take, never by window)", "",
+              "Within each content, takes ordered by a stable hash of the file name: 15% test, 10% val.", "",
+              "| source | train | val | test |", "|---|---|---|---|"]
+    for source in SNAPSHOTS:
+        n = {s: sum(1 for c in clips if c.source == source and c.split == s) for s in ("train", "val", "test")}
+        lines.append(f"| {source} | {n['train']} | {n['val']} | {n['test']} |")
+    lines += ["", "## Licences", "",
+              f"- `bandai-namco-2.npz`: {BANDAI_NAMCO.consequence}. Credit: {BANDAI_NAMCO.credit}", ""]
+    (out / "README.md").write_text("\n".join(lines))
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="interplay data build --staged", description=__doc__)
+    ap.add_argument("--mirror", type=Path, default=None, help="mirror root (default /work/.mirror)")
+    ap.add_argument("--source", type=Path, default=DEFAULT_SOURCE, help="raw data folder (../shared/data)")
+    ap.add_argument("--out", type=Path, default=STAGED_DIR, help="output folder (models/data/staged)")
+    ap.add_argument("--limit", type=int, default=None, help="at most N clips per source (tests)")
+    args = ap.parse_args(argv)
+    root = args.mirror or mirror_root()
+    SKIPPED.clear()
+    clips: list[Clip] = []
+    try:
+        with tempfile.TemporaryDirectory() as tmp:
+            t0 = time.time()
+            raw = BANDAI.extract(Path(tmp), root)
+            if args.limit:
+                for p in sorted((raw / "data").glob("*.bvh"), key=lambda p: _stable_rank(p.name))[args.limit:]:
+                    p.unlink()
+            got = build_bandai_more(raw, args.source)
+            print(f"{'bandai-namco-2':14s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
+            clips.extend(got)
+    except SnapshotMissing as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 2
+    assign_staged_splits(clips)
+    add_captions(clips)
+    save_clips(clips, args.out)
+    write_staged_card(clips, args.out)
+    print(f"wrote {len(clips)} staged clips to {args.out}")
+    return 0
+
+
+__all__ = ["BANDAI", "SNAPSHOTS", "STAGED_DIR", "build_bandai_more", "main"]
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
