@@ -50,7 +50,7 @@ def test_bvh_presets_are_the_writers(fake_client, pair, query, preset):
     fps = query.get("fps", 20)
     assert bvh.fps == pytest.approx(fps, rel=1e-6)
     assert bvh.num_frames == int(np.ceil((len(people[0]) - 1) / 20 * fps - 1e-6)) + 1   # the end kept
-    assert bvh.names[0] == ("Hips" if query.get("names") == "mixamo" else "pelvis")
+    assert bvh.names[0] == ("mixamorig:Hips" if query.get("names") == "mixamo" else "pelvis")
     if query.get("names") == "mixamo":
         assert set(bvh.names) == set(MIXAMO_NAMES)
 

@@ -8,8 +8,8 @@ import json
 import numpy as np
 import pygltflib as gl
 
-from interplay.motion.kinematics import floor_height
-from interplay.motion.rig import Rig, solve_rig
+from interplay.motion.formats.presets import export_rigs
+from interplay.motion.rig import Rig
 from tests.helpers.paths import REPO
 
 FIXTURES = REPO / "tests" / "fixtures" / "behaviour"
@@ -25,9 +25,10 @@ def fixture_people(name: str) -> list[np.ndarray]:
     return [np.asarray(p["joints"], dtype=np.float64) for p in data["people"]]
 
 
-def rigs_of(people: list[np.ndarray]) -> list[Rig]:
-    """The rigs the export solves: every person over the people's one floor."""
-    return [solve_rig(p, floor=floor_height(people)) for p in people]
+def rigs_of(people: list[np.ndarray], out_fps: float | None = None) -> list[Rig]:
+    """The rigs the GLB export writes: every person over the people's one floor, lifted where
+    the mesh would go under it, resampled to out_fps."""
+    return export_rigs(people, 20, out_fps, body="mesh")
 
 
 def load(data: bytes) -> tuple[gl.GLTF2, bytes]:

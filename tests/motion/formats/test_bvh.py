@@ -121,16 +121,30 @@ def real_clips():
     return {"walk": walk, "jump": jump, "lead": lead[:200], "follow": follow[:200]}
 
 
+def assert_lifted(back: np.ndarray, joints: np.ndarray, most: float = 0.01) -> np.ndarray:
+    """back (T, 22, 3) is joints within 1 mm but for a vertical lift of the whole body on
+    some frames (the floor pass's), at most `most` metres; returns the lift (T,)."""
+    diff = back - joints
+    assert np.abs(diff[..., [0, 2]]).max() < 1e-3
+    lift = np.median(diff[..., 1], axis=1)
+    assert np.abs(diff[..., 1] - lift[:, None]).max() < 1e-3
+    assert -1e-3 < lift.min() and lift.max() < most
+    return lift
+
+
 @pytest.mark.parametrize("name", ["walk", "jump", "lead", "follow"])
 def test_write_then_read_reproduces_fitted_joints_within_1mm(real_clips, name):
     joints = real_clips[name]
     text = write_bvh(joints)
     back = smpl22_positions(read_bvh(text))
     assert back.shape == joints.shape
-    assert np.abs(back - joints).max() < 1e-3
+    # Exactly, but where a foot's joints or toe tip dip more than 8 mm under the floor (the
+    # salsa capture's, by up to 1.3 cm): there the whole body is lifted out.
+    lift = assert_lifted(back, joints)
+    assert np.mean(lift > 1e-3) < 0.1
     # With the offsets given explicitly, too.
     fitted, offsets = fit_to_skeleton(joints)
-    assert np.abs(smpl22_positions(read_bvh(write_bvh(joints, offsets=offsets))) - fitted).max() < 1e-3
+    assert_lifted(smpl22_positions(read_bvh(write_bvh(joints, offsets=offsets))), fitted)
 
 
 def test_written_file_is_a_standard_hierarchy(real_clips):
@@ -239,8 +253,8 @@ def test_mixamo_names_map_the_smpl_joints(real_clips):
     from interplay.motion.formats.bvh import MIXAMO_NAMES
     text = write_bvh(real_clips["walk"][:5], names="mixamo")
     bvh = read_bvh(text)
-    assert bvh.names[0] == "Hips" and set(bvh.names) == set(MIXAMO_NAMES)
-    by = dict(zip(sk.JOINT_NAMES, MIXAMO_NAMES))
+    assert bvh.names[0] == "mixamorig:Hips" and set(bvh.names) == set(MIXAMO_NAMES)
+    by = {s: m.removeprefix("mixamorig:") for s, m in zip(sk.JOINT_NAMES, MIXAMO_NAMES)}
     assert [by[n] for n in ("left_collar", "left_shoulder", "left_elbow", "left_wrist")] == \
         ["LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand"]
     assert [by[n] for n in ("right_hip", "right_knee", "right_ankle", "right_foot")] == \

@@ -30,7 +30,8 @@ def test_a_two_person_glb_has_a_skinned_body_and_skeleton_per_person(pair):
     mesh = humanoid()
     for k, (skin, rig) in enumerate(zip(doc.skins, rigs_of(people))):
         names = [doc.nodes[n].name for n in skin.joints]
-        assert names == list(sk.JOINT_NAMES) and skin.skeleton == skin.joints[0]
+        # Two people: each one's bones named apart ("person1_pelvis", "person2_pelvis").
+        assert names == [f"person{k + 1}_{n}" for n in sk.JOINT_NAMES] and skin.skeleton == skin.joints[0]
         for j, n in enumerate(skin.joints):                 # the tree is the skeleton's
             kids = [skin.joints.index(c) for c in doc.nodes[n].children]
             assert kids == sk.children(j)

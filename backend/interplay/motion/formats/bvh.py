@@ -25,8 +25,22 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion import skeleton as sk
+from interplay.motion.formats.presets import (
+    FPS_CHOICES as FPS_CHOICES,
+)
+from interplay.motion.formats.presets import (
+    MIXAMO_NAMES,
+    MIXAMO_PREFIX,
+    UNITS,
+    check_fps_units_names,
+    export_rigs,
+    joint_names,
+)
+from interplay.motion.formats.presets import (
+    NAMINGS as NAMINGS,
+)
 from interplay.motion.kinematics import forward_kinematics
-from interplay.motion.rig import end_sites, resample_rig, solve_rig
+from interplay.motion.rig import end_sites
 from interplay.motion.rotations import axis_rotation, euler_to_matrix, matrix_to_euler
 
 _CHANNEL = re.compile(r"^([XYZ])(position|rotation)$", re.IGNORECASE)
@@ -269,39 +283,23 @@ def read_bvh(text_or_path: str | Path) -> Bvh:
                motion=values[:n_frames * width].reshape(n_frames, width))
 
 
-# Export presets (the CLI's flags and the API's query parameters offer these).
-FPS_CHOICES: tuple[int, ...] = (20, 24, 30, 60)
-UNITS: dict[str, float] = {"m": 1.0, "cm": 100.0}          # file units per metre
+# Export presets (the CLI's flags and the API's query parameters offer these), shared with
+# the GLB (`formats/presets.py`); the up axis is BVH's alone.
 UP_AXES: tuple[str, ...] = ("y", "z")
-NAMINGS: tuple[str, ...] = ("smpl", "mixamo")
-# Mixamo-style names of the 22 SMPL joints, in SMPL order. SMPL's collar is Mixamo's
-# Shoulder, its shoulder the (upper) Arm, elbow the ForeArm, wrist the Hand; hip the UpLeg,
-# knee the Leg, ankle the Foot, foot (the ball of the foot) the ToeBase; spine1-3 are
-# Spine, Spine1, Spine2.
-MIXAMO_NAMES: tuple[str, ...] = (
-    "Hips", "LeftUpLeg", "RightUpLeg", "Spine", "LeftLeg", "RightLeg",
-    "Spine1", "LeftFoot", "RightFoot", "Spine2", "LeftToeBase", "RightToeBase",
-    "Neck", "LeftShoulder", "RightShoulder", "Head", "LeftArm",
-    "RightArm", "LeftForeArm", "RightForeArm", "LeftHand", "RightHand",
-)
 # Y-up → Z-up: +90° about X, (x, y, z) → (x, -z, y): up +Y becomes +Z, forward +Z becomes
 # -Y (Blender's front view looks along +Y at a character facing -Y).
 Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
-
-
-def joint_names(naming: str = "smpl") -> tuple[str, ...]:
-    """The 22 joints' names in SMPL order under a naming ("smpl" or "mixamo")."""
-    if naming not in NAMINGS:
-        raise ValueError(f"joint names must be one of {', '.join(NAMINGS)}, got {naming!r}")
-    return sk.JOINT_NAMES if naming == "smpl" else MIXAMO_NAMES
 
 
 def smpl22_positions(bvh: Bvh) -> np.ndarray:
     """Joints (T, 22, 3) in SMPL order, file units and axes, from a BVH whose joints carry
     our names, SMPL's or Mixamo-style (one we wrote)."""
     pos = bvh.positions()
-    names = MIXAMO_NAMES if MIXAMO_NAMES[0] in bvh.names else sk.JOINT_NAMES
-    return pos[:, [bvh.index(n) for n in names]]
+    if MIXAMO_NAMES[0] in bvh.names:
+        return pos[:, [bvh.index(n) for n in MIXAMO_NAMES]]
+    if "Hips" in bvh.names:                       # written before the mixamorig: prefix
+        return pos[:, [bvh.index(n.removeprefix(MIXAMO_PREFIX)) for n in MIXAMO_NAMES]]
+    return pos[:, [bvh.index(n) for n in sk.JOINT_NAMES]]
 
 
 # Rotation channel order of each joint we write. A Tait–Bryan order locks when its middle
@@ -348,13 +346,9 @@ def _write_joint(j: int, depth: int, offsets: np.ndarray, local: np.ndarray, end
 def check_preset(out_fps: float | None = None, units: str = "m", up: str = "y",
                  names: str = "smpl") -> None:
     """ValueError naming the choices when a BVH preset value is not one we write."""
-    if out_fps is not None and not (np.isfinite(out_fps) and out_fps > 0):
-        raise ValueError(f"fps must be positive, got {out_fps}")
-    if units not in UNITS:
-        raise ValueError(f"units must be one of {', '.join(UNITS)}, got {units!r}")
+    check_fps_units_names(out_fps, units, names)
     if up not in UP_AXES:
         raise ValueError(f"up axis must be one of {', '.join(UP_AXES)}, got {up!r}")
-    joint_names(names)
 
 
 def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | None = None, *,
@@ -363,11 +357,11 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
     """One person's joints (T, 22, 3) (metres, Y up, `fps` frames a second) → BVH text: our 22
     joints as a standard hierarchy (6 channels on the root, 3 rotation channels elsewhere,
     End Sites at head, wrists and toes), rest pose = the offsets (fitted from the motion when
-    not given), local rotations from `rig.solve_rig` (floor: the ground the toe tips keep
-    above, for two people the shared one). Presets: out_fps (default fps; resampled over the
-    same duration, root linearly, rotations by slerp), units "m" or "cm", up "y" or "z",
-    names "smpl" or "mixamo". Re-reading reproduces joints that lie on those bone lengths, in
-    those units and axes."""
+    not given), the rig of `presets.export_rigs` (floor: the ground no hand, knee or foot
+    goes under, for two people the shared one). Presets: out_fps (default fps; resampled over
+    the same duration keeping the last pose, root linearly, rotations by slerp), units "m" or
+    "cm", up "y" or "z", names "smpl" or "mixamo". Re-reading reproduces joints that lie on
+    those bone lengths, in those units and axes, up to the floor pass's lift of the root."""
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or joints.shape[0] < 1:
         raise ValueError(f"joints must be (T, {sk.NUM_JOINTS}, 3) with T ≥ 1, got {joints.shape}")
@@ -381,7 +375,7 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
         if offsets.shape != (sk.NUM_JOINTS, 3):
             raise ValueError(f"offsets must be ({sk.NUM_JOINTS}, 3), got {offsets.shape}")
     rate = fps if out_fps is None else float(out_fps)
-    rig = resample_rig(solve_rig(joints, offsets, floor=floor), fps, rate)
+    (rig,) = export_rigs([joints], fps, rate, [offsets], floor, body="joints")
     local, root, offs = rig.matrices(), rig.root, rig.offsets
     ends = end_sites(offs)
     if up == "z":

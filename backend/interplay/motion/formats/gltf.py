@@ -21,14 +21,23 @@ rest pose facing +Z; the person's left is +X.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 import pygltflib as gl
 
 from interplay.motion import skeleton as sk
 from interplay.motion.formats.humanoid import Humanoid, humanoid, on_skeleton
-from interplay.motion.kinematics import floor_height
-from interplay.motion.rig import Rig, solve_rig
+from interplay.motion.formats.presets import (
+    END_NAMES,
+    UNITS,
+    bone_axes,
+    check_fps_units_names,
+    export_rigs,
+    joint_names,
+)
+from interplay.motion.rig import Rig, end_sites
+from interplay.motion.rotations import matrix_to_quat
 
 MEDIA_TYPE = "model/gltf-binary"
 GENERATOR = "Interplay (pygltflib)"
@@ -81,34 +90,57 @@ def _shared_mesh_data(buf: _Buffer, mesh: Humanoid) -> dict[str, int]:
     }
 
 
-def _inverse_bind(offsets: np.ndarray) -> np.ndarray:
-    """(22, 16) float32 column-major inverse bind matrices: the rest pose has no rotation, so
-    each is the translation by minus the joint's rest position."""
-    m = np.tile(np.eye(4), (sk.NUM_JOINTS, 1, 1))
-    m[:, :3, 3] = -sk.rest_joints(offsets)
-    return np.swapaxes(m, 1, 2).reshape(sk.NUM_JOINTS, 16).astype(np.float32)
+def _inverse_bind(bind: np.ndarray, rest: np.ndarray) -> np.ndarray:
+    """(N, 16) float32 column-major inverse bind matrices of joints whose bind pose is the
+    rotation bind (N, 3, 3) at rest (N, 3): [bind^T | -bind^T rest]."""
+    m = np.tile(np.eye(4), (len(rest), 1, 1))
+    m[:, :3, :3] = np.swapaxes(bind, -1, -2)
+    m[:, :3, 3] = -np.einsum("nji,nj->ni", bind, rest)
+    return np.swapaxes(m, 1, 2).reshape(len(rest), 16).astype(np.float32)
+
+
+def _quat(m: np.ndarray) -> list[float]:
+    q = matrix_to_quat(m)
+    return [float(x) for x in q[[1, 2, 3, 0]]]
 
 
 def _add_person(doc: gl.GLTF2, buf: _Buffer, label: str, colour: Sequence[float],
-                offsets: np.ndarray, mesh: Humanoid | None, shared: dict[str, int] | None) -> int:
-    """Adds a person's root node `label` over its joint nodes, its skin and (with mesh) its
-    body `<label>_body`; returns the first joint's node index (joint j is node first + j)."""
+                offsets: np.ndarray, mesh: Humanoid | None, shared: dict[str, int] | None,
+                layout: _Layout) -> int:
+    """Adds a person's root node `label` over its joint nodes (then, with Mixamo names, its
+    end bones), its skin and (with mesh) its body `<label>_body`; returns the first joint's
+    node index (joint j is node first + j). offsets in metres; the file's units by layout."""
     first = len(doc.nodes) + 1                       # after the person's root node
     doc.scenes[0].nodes.append(len(doc.nodes))
     doc.nodes.append(gl.Node(name=label, children=[first]))
-    for j, name in enumerate(sk.JOINT_NAMES):
-        doc.nodes.append(gl.Node(
-            name=name, translation=[float(x) for x in offsets[j]],
-            children=[first + c for c in sk.children(j)]))
+    bind = layout.bind(offsets)
+    ends = end_sites(offsets) if layout.ends else {}
+    end_node = {j: first + sk.NUM_JOINTS + k for k, j in enumerate(ends)}
+    rest = sk.rest_joints(offsets)
+    for j, name in enumerate(layout.names):
+        p = sk.PARENTS[j]
+        parent = np.eye(3) if p < 0 else bind[p]
+        node = gl.Node(name=layout.prefix(label) + name,
+                       translation=[float(x) for x in parent.T @ offsets[j] * layout.scale],
+                       children=[first + c for c in sk.children(j)] + ([end_node[j]] if j in ends else []))
+        if layout.axes:
+            node.rotation = _quat(parent.T @ bind[j])
+        doc.nodes.append(node)
+    for j, tip in ends.items():
+        doc.nodes.append(gl.Node(name=layout.prefix(label) + END_NAMES[layout.naming][j],
+                                 translation=[float(x) for x in bind[j].T @ tip * layout.scale]))
+    tips = np.array([rest[j] + ends[j] for j in ends]).reshape(-1, 3)
+    ibm = _inverse_bind(np.concatenate([bind, bind[list(ends)]]),
+                        np.concatenate([rest, tips]) * layout.scale)
     doc.skins.append(gl.Skin(name=label, skeleton=first,
-                             joints=list(range(first, first + sk.NUM_JOINTS)),
-                             inverseBindMatrices=buf.add(_inverse_bind(offsets))))
+                             joints=list(range(first, first + sk.NUM_JOINTS + len(ends))),
+                             inverseBindMatrices=buf.add(ibm)))
     if mesh is not None and shared is not None:
         doc.materials.append(gl.Material(
             name=label, pbrMetallicRoughness=gl.PbrMetallicRoughness(
                 baseColorFactor=[float(c) for c in colour],
                 metallicFactor=0.0, roughnessFactor=0.8)))
-        positions = on_skeleton(mesh, offsets)
+        positions = on_skeleton(mesh, offsets) * np.float32(layout.scale)
         attributes = gl.Attributes(POSITION=buf.add(positions, gl.ARRAY_BUFFER, bounds=True),
                                    NORMAL=shared["NORMAL"], JOINTS_0=shared["JOINTS_0"],
                                    WEIGHTS_0=shared["WEIGHTS_0"])
@@ -119,6 +151,49 @@ def _add_person(doc: gl.GLTF2, buf: _Buffer, label: str, colour: Sequence[float]
                                  skin=len(doc.skins) - 1))
         doc.scenes[0].nodes.append(len(doc.nodes) - 1)
     return first
+
+
+@dataclass(frozen=True)
+class _Layout:
+    """How the joints are written: names (SMPL's or Mixamo's; each prefixed "person<k>_"
+    when there are several people), units (scale: file units per metre), and with Mixamo
+    names its rest axes (`presets.bone_axes`) and end bones."""
+    naming: str = "smpl"
+    scale: float = 1.0
+    several: bool = False
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return joint_names(self.naming)
+
+    @property
+    def axes(self) -> bool:
+        return self.naming == "mixamo"
+
+    @property
+    def ends(self) -> bool:
+        return self.naming == "mixamo"
+
+    def prefix(self, label: str) -> str:
+        return f"{label}_" if self.several else ""
+
+    def bind(self, offsets: np.ndarray) -> np.ndarray:
+        if not self.axes:
+            return np.tile(np.eye(3), (sk.NUM_JOINTS, 1, 1))
+        return bone_axes(offsets, end_sites(offsets))
+
+    def rotations(self, rig: Rig, bind: np.ndarray) -> np.ndarray:
+        """The rig's local rotations (T, 22, 4) w x y z for nodes whose rest rotations are
+        bind's: parent_bind^T · local · bind, one sign through time."""
+        if not self.axes:
+            q = np.asarray(rig.rotations, np.float64)
+            return q / np.linalg.norm(q, axis=-1, keepdims=True)
+        parent = np.stack([np.eye(3) if p < 0 else bind[p] for p in sk.PARENTS])
+        m = np.swapaxes(parent, -1, -2)[None] @ rig.matrices() @ bind[None]
+        q = matrix_to_quat(m)
+        for i in range(1, len(q)):
+            q[i, np.sum(q[i] * q[i - 1], axis=-1) < 0] *= -1.0
+        return q
 
 
 def _document(extras: dict) -> gl.GLTF2:
@@ -134,26 +209,30 @@ def _finish(doc: gl.GLTF2, buf: _Buffer) -> bytes:
 
 
 def rigs_glb(rigs: Sequence[Rig], fps: float = sk.FPS, *, mesh: bool = True,
-             name: str = "motion") -> bytes:
-    """The GLB of one or more people's rigs (one frame rate, one length)."""
+             name: str = "motion", units: str = "m", names: str = "smpl") -> bytes:
+    """The GLB of one or more people's rigs (one frame rate, one length, metres), written
+    in units ("m" or "cm") with joint names ("smpl" or "mixamo")."""
     if not rigs:
         raise ValueError("a GLB needs at least one person")
+    check_fps_units_names(fps, units, names)
     frames = {r.frames for r in rigs}
     if len(frames) != 1:
         raise ValueError(f"people have different lengths {sorted(frames)}")
     t = frames.pop()
-    doc = _document({"fps": float(fps), "frames": t, "skeleton": sk.SKELETON_NAME})
+    layout = _Layout(naming=names, scale=UNITS[units], several=len(rigs) > 1)
+    doc = _document({"fps": float(fps), "frames": t, "skeleton": sk.SKELETON_NAME,
+                     "units": units, "names": names})
     buf = _Buffer(doc)
     body = humanoid() if mesh else None
     shared = _shared_mesh_data(buf, body) if body is not None else None
     times = buf.add((np.arange(t) / float(fps)).astype(np.float32), bounds=True)
     animation = gl.Animation(name=name)
     for k, rig in enumerate(rigs):
+        offsets = np.asarray(rig.offsets, np.float64)
         first = _add_person(doc, buf, f"person{k + 1}", PERSON_COLOURS[k % len(PERSON_COLOURS)],
-                            np.asarray(rig.offsets, np.float64), body, shared)
-        outputs = [(first + sk.PELVIS, "translation", np.asarray(rig.root, np.float32))]
-        q = np.asarray(rig.rotations, np.float64)
-        q = q / np.linalg.norm(q, axis=-1, keepdims=True)
+                            offsets, body, shared, layout)
+        outputs = [(first + sk.PELVIS, "translation", np.asarray(rig.root * layout.scale, np.float32))]
+        q = layout.rotations(rig, layout.bind(offsets))
         xyzw = q[..., [1, 2, 3, 0]].astype(np.float32)
         outputs += [(first + j, "rotation", xyzw[:, j]) for j in range(sk.NUM_JOINTS)]
         for node, path, values in outputs:
@@ -167,13 +246,15 @@ def rigs_glb(rigs: Sequence[Rig], fps: float = sk.FPS, *, mesh: bool = True,
 
 
 def write_glb(people: Sequence[np.ndarray], fps: float = sk.FPS, *, mesh: bool = True,
-              name: str = "motion") -> bytes:
-    """The GLB of a motion: people (T, 22, 3) each, solved into rigs by `rig.solve_rig`
-    (each on the rest offsets of their own motion, all over one floor)."""
+              name: str = "motion", out_fps: float | None = None, units: str = "m",
+              names: str = "smpl") -> bytes:
+    """The GLB of a motion: people (T, 22, 3) each at fps, as `presets.export_rigs` writes
+    them (each on the rest offsets of their own motion, all over one floor, no hand, knee or
+    foot under it, resampled to out_fps keeping the last pose), in units with names."""
+    check_fps_units_names(out_fps, units, names)
     people = [np.asarray(p, np.float64) for p in people]
-    floor = floor_height(people) if people else None
-    rigs = [solve_rig(p, fps=fps, floor=floor) for p in people]
-    return rigs_glb(rigs, fps, mesh=mesh, name=name)
+    rate = fps if out_fps is None else float(out_fps)
+    return rigs_glb(export_rigs(people, fps, rate), rate, mesh=mesh, name=name, units=units, names=names)
 
 
 def humanoid_glb(offsets: np.ndarray = sk.REST_OFFSETS) -> bytes:
@@ -182,5 +263,5 @@ def humanoid_glb(offsets: np.ndarray = sk.REST_OFFSETS) -> bytes:
     buf = _Buffer(doc)
     body = humanoid()
     _add_person(doc, buf, "humanoid", (0.8, 0.8, 0.8, 1.0), np.asarray(offsets, np.float64), body,
-                _shared_mesh_data(buf, body))
+                _shared_mesh_data(buf, body), _Layout())
     return _finish(doc, buf)
