@@ -24,14 +24,17 @@ test("the page's limits are the API's (read from /openapi.json)", async ({ page 
   const maxLength = job.prompt.maxLength ?? job.prompt.anyOf?.find((b: { maxLength?: number }) => b.maxLength)?.maxLength;
   expect(maxLength).toBe(500);
   await openStudio(page);
-  await expect(page.getByTestId("prompt")).toHaveAttribute("maxlength", String(maxLength));
+  // the limit is the counter's (a longer prompt is kept as typed and said to be too long, not cut)
+  await expect(page.getByTestId("prompt-count")).toHaveAttribute("data-max", String(maxLength));
   await expect(page.getByTestId("seconds")).toHaveAttribute("min", String(job.seconds.minimum));
   await expect(page.getByTestId("seconds")).toHaveAttribute("max", String(job.seconds.maximum));
   const seedMax = job.seed.anyOf.find((b: { maximum?: number }) => b.maximum !== undefined).maximum;
   await expect(page.getByTestId("seed")).toHaveAttribute("max", String(seedMax));
-  // the field takes no more than the API does
+  // a longer prompt is kept as typed (never cut silently) and said to be over the API's limit
   await page.getByTestId("prompt").fill("a".repeat(600));
-  expect((await page.getByTestId("prompt").inputValue()).length).toBe(500);
+  expect((await page.getByTestId("prompt").inputValue()).length).toBe(600);
+  await expect(page.getByTestId("prompt-count")).toHaveText(`600 / ${maxLength}`);
+  await expect(page.getByTestId("form-problems")).toContainText(`the limit is ${maxLength}`);
 });
 
 test("the seed field: a typed seed is sent, New seed picks one, empty sends none", async ({ page }) => {

@@ -11,6 +11,7 @@ const schema = {
           prompt: { anyOf: [{ type: "string" }, { type: "null" }], maxLength: 420 },
           seconds: { type: "number", minimum: 2, maximum: 12 },
           seed: { anyOf: [{ type: "integer", minimum: 0, maximum: 999 }, { type: "null" }] },
+          persons: { type: "integer", enum: [1, 2, 3] },
         },
       },
       TrajectoryIn: {
@@ -29,7 +30,7 @@ const schema = {
 
 describe("limitsFromSchema", () => {
   it("reads the prompt, seconds, seed and path limits from the API's schema", () => {
-    expect(limitsFromSchema(schema)).toEqual({ promptMax: 420, secondsMin: 2, secondsMax: 12, seedMax: 999, pathPoints: 50, pathCoord: 30 });
+    expect(limitsFromSchema(schema)).toEqual({ promptMax: 420, secondsMin: 2, secondsMax: 12, seedMax: 999, personsMax: 3, pathPoints: 50, pathCoord: 30 });
   });
 
   it("keeps the defaults for what the schema lacks or when there is none", () => {

@@ -1,4 +1,4 @@
-// The request limits the page enforces (prompt length, seconds, seed, path size), read from the
+// The request limits the page enforces (prompt length, seconds, people, seed, path size), read from the
 // API's own schema (/openapi.json: `JobCreate` and `TrajectoryIn`, made from
 // backend/interplay/pipeline/requests.py) instead of being written twice. The defaults are
 // used only until the schema arrives, or if it cannot be read.
@@ -8,6 +8,8 @@ export interface Limits {
   secondsMin: number;
   secondsMax: number;
   seedMax: number;
+  /** How many people a request may have: 1 … personsMax (the schema's `persons` enum). */
+  personsMax: number;
   /** Points of a drawn path. */
   pathPoints: number;
   /** Metres from the origin of any drawn point. */
@@ -19,6 +21,7 @@ export const DEFAULT_LIMITS: Limits = {
   secondsMin: 1,
   secondsMax: 20,
   seedMax: 2 ** 31 - 1,
+  personsMax: 2,
   pathPoints: 2000,
   pathCoord: 100,
 };
@@ -37,6 +40,12 @@ function constraint(prop: unknown, key: string): number | undefined {
     if (v !== undefined) return v;
   }
   return undefined;
+}
+
+/** The largest number of an `enum` (persons: [1, 2]). */
+function enumMax(prop: unknown): number | undefined {
+  const values = isObj(prop) && Array.isArray(prop.enum) ? prop.enum.filter((v): v is number => typeof v === "number") : [];
+  return values.length ? Math.max(...values) : undefined;
 }
 
 function component(openapi: unknown, name: string): Schema | null {
@@ -60,6 +69,7 @@ export function limitsFromSchema(openapi: unknown, defaults: Limits = DEFAULT_LI
     secondsMin: pick(constraint(job.seconds, "minimum"), defaults.secondsMin),
     secondsMax: pick(constraint(job.seconds, "maximum"), defaults.secondsMax),
     seedMax: pick(constraint(job.seed, "maximum"), defaults.seedMax),
+    personsMax: pick(enumMax(job.persons), defaults.personsMax),
     pathPoints: pick(constraint(points, "maxItems"), defaults.pathPoints),
     pathCoord: pick(coord, defaults.pathCoord),
   };
