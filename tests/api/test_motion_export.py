@@ -86,3 +86,16 @@ def test_the_routes_choices_are_the_writers():
     from interplay.api.routes.motions import BvhFps
     from interplay.motion.formats.bvh import FPS_CHOICES
     assert tuple(int(f) for f in BvhFps) == FPS_CHOICES
+
+
+def test_glb_takes_the_presets(fake_client, pair):
+    from tests.helpers.gltf_files import load
+    r = fake_client.get(f"/api/motions/{pair}/export",
+                        params={"format": "glb", "fps": 30, "units": "cm", "names": "mixamo", "mesh": False})
+    assert r.status_code == 200, r.text
+    doc, _ = load(r.content)
+    frames = len(stored_people(fake_client, pair)[0])
+    assert doc.extras["fps"] == 30 and doc.extras["units"] == "cm" and doc.extras["names"] == "mixamo"
+    assert doc.extras["frames"] == int(np.ceil((frames - 1) / 20 * 30 - 1e-6)) + 1   # the end kept
+    skin_names = [doc.nodes[n].name for n in doc.skins[1].joints]
+    assert skin_names[0] == "person2_mixamorig:Hips" and "person2_mixamorig:LeftToe_End" in skin_names

@@ -16,6 +16,7 @@ from interplay.motion.kinematics import fit_to_skeleton
 from interplay.motion.motion import Motion
 from interplay.motion.rig import rig_from_json, rig_positions
 from tests.helpers.bvh_readers import bvhio_positions
+from tests.helpers.gltf_files import accessor, load, rigs_of
 
 
 @pytest.fixture(scope="module")
@@ -51,13 +52,42 @@ def test_bvh_presets_from_flags_read_back_in_bvhio(pair_file, tmp_path, flags):
 @pytest.mark.parametrize("flags,msg", [
     (["--format", "bvh", "--fps", "25"], "invalid choice"), (["--format", "bvh", "--units", "mm"], "invalid choice"),
     (["--format", "bvh", "--up", "x"], "invalid choice"), (["--format", "bvh", "--names", "ue"], "invalid choice"),
-    (["--format", "json", "--fps", "30"], "--format bvh only")])
+    (["--format", "json", "--fps", "30"], "--format bvh or glb only"),
+    (["--format", "glb", "--up", "z"], "BVH only"), (["--format", "glb", "--fps", "25"], "invalid choice")])
 def test_bad_presets_exit_2_with_a_message(pair_file, tmp_path, capsys, flags, msg):
     with pytest.raises(SystemExit) as exc:
         code = cli.main(["export", str(pair_file), "--out", str(tmp_path / "x"), *flags])
         raise SystemExit(code)
     assert exc.value.code == 2
     assert msg in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("fps", [24, 30, 60])
+def test_glb_presets_from_flags_exact_length_cm_mixamo(pair_file, tmp_path, fps):
+    out = tmp_path / "p.glb"
+    flags = ["--fps", str(fps), "--units", "cm", "--names", "mixamo"]
+    assert cli.main(["export", str(pair_file), "--format", "glb", "--out", str(out), *flags]) == 0
+    doc, blob = load(out.read_bytes())
+    # 40 frames at 20 fps last 1.95 s: at 24 fps 46.8 frame steps, rounded up to keep the end.
+    frames = int(np.ceil(39 / 20 * fps - 1e-6)) + 1
+    assert doc.extras["fps"] == fps and doc.extras["frames"] == frames and doc.extras["units"] == "cm"
+    sampler = doc.animations[0].samplers[0]
+    assert np.allclose(accessor(doc, blob, sampler.input), np.arange(frames) / fps)
+    people = Motion.from_json(json.loads(pair_file.read_text())).people
+    for k, (skin, rig) in enumerate(zip(doc.skins, rigs_of(people, fps))):
+        names = [doc.nodes[n].name for n in skin.joints]
+        # Mixamo's names, each person's apart, and its end bones.
+        assert names[:22] == [f"person{k + 1}_{n}" for n in joint_names("mixamo")]
+        assert f"person{k + 1}_mixamorig:HeadTop_End" in names and len(names) == 27
+        hips = doc.nodes[skin.joints[0]]
+        root = next(ch for ch in doc.animations[0].channels
+                    if ch.target.node == skin.joints[0] and ch.target.path == "translation")
+        # Centimetres: the root's keys are the (lifted, resampled) rig's × 100, the last is the
+        # motion's last pose.
+        keys = accessor(doc, blob, doc.animations[0].samplers[root.sampler].output)
+        assert np.abs(keys - rig.root * 100).max() < 0.01
+        assert np.abs(keys[-1, [0, 2]] - people[k][-1, 0, [0, 2]] * 100).max() < 0.1
+        assert np.linalg.norm(hips.translation) > 50          # the hips' rest height, in cm
 
 
 def test_json_export_is_version_2_and_reads_back(pair_file, tmp_path):

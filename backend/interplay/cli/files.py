@@ -26,12 +26,16 @@ def cmd_metrics(args) -> int:
 def cmd_export(args) -> int:
     motion = read_motion(args.motion)
     given = [f"--{k}" for k in ("fps", "units", "up", "names") if getattr(args, k) is not None]
-    if given and args.format != "bvh":
-        raise CliError(f"{', '.join(given)}: BVH presets, for --format bvh only")
+    if given and args.format == "json":
+        raise CliError(f"{', '.join(given)}: presets for --format bvh or glb only")
+    if args.up is not None and args.format == "glb":
+        raise CliError("--up: BVH only (glTF is Y up by definition)")
     if args.format == "glb":
         from interplay.motion.formats.gltf import write_glb
         write_bytes(args.out, write_glb([p.astype("float64") for p in motion.people], fps=motion.fps,
-                                        mesh=not args.no_mesh, name=motion.prompt or "motion"))
+                                        mesh=not args.no_mesh, name=motion.prompt or "motion",
+                                        out_fps=args.fps or motion.fps, units=args.units or "m",
+                                        names=args.names or "smpl"))
         print(f"wrote {args.out}", file=sys.stderr)
         return 0
     if args.format == "json":
@@ -66,12 +70,14 @@ def register(sub) -> None:
     p.add_argument("--person", type=int, default=0, help="BVH: which person (default 0)")
     from interplay.motion.formats.bvh import FPS_CHOICES, NAMINGS, UNITS, UP_AXES
     p.add_argument("--fps", type=int, choices=FPS_CHOICES,
-                   help="BVH: frames per second, resampled (default 20, the motion's)")
-    p.add_argument("--units", choices=tuple(UNITS), help="BVH: m (default) or cm")
+                   help="BVH, GLB: frames per second, resampled keeping the last pose "
+                        "(default 20, the motion's)")
+    p.add_argument("--units", choices=tuple(UNITS), help="BVH, GLB: m (default) or cm")
     p.add_argument("--up", choices=UP_AXES,
                    help="BVH: up axis, y (default) or z (facing -Y, as in Blender)")
     p.add_argument("--names", choices=NAMINGS,
-                   help="BVH: joint names, smpl (default) or mixamo (Hips, LeftUpLeg, ...)")
+                   help="BVH, GLB: joint names, smpl (default) or mixamo (mixamorig:Hips, ...; "
+                        "the GLB with Mixamo's bone axes and end bones)")
     p.add_argument("--no-mesh", action="store_true",
                    help="GLB: skeletons and the animation only, no skinned mesh")
     p.set_defaults(func=cmd_export)

@@ -103,3 +103,33 @@ def test_threejs_plays_the_animation_only_variant(files):
         assert person["vertices"] is None
         played = np.asarray(person["joints"])
         assert np.linalg.norm(played - rig_positions(rig)[[10, 29]], axis=-1).max() < MM
+
+
+def test_threejs_plays_the_mixamo_rig_at_24_fps_in_centimetres(tmp_path):
+    """The presets (--fps 24 --units cm --names mixamo): bones with Mixamo's rest axes (each
+    bone's Y along it) and end bones, keyed at 24 fps with the last pose kept; three.js puts
+    every joint and vertex where the resampled rig does, in centimetres, within 1 mm."""
+    people = fixture_people("coda_hug")
+    path = tmp_path / "mixamo.glb"
+    path.write_bytes(write_glb(people, fps=20, out_fps=24, units="cm", names="mixamo"))
+    report = node("validate", str(path))[str(path)]
+    assert report["errors"] == 0 and report["warnings"] == 0, report["messages"]
+    rigs = rigs_of(people, 24)
+    frames = rigs[0].frames
+    assert frames == int(np.ceil((len(people[0]) - 1) / 20 * 24 - 1e-6)) + 1
+    keys = [0, 7, frames // 2, frames - 1]
+    # The last key a hair early: a looping AnimationMixer at exactly the clip's (float32)
+    # duration wraps round to the first frame.
+    got = node("sample", str(path), *[str(min(f / 24, (frames - 1) / 24 - 1e-5)) for f in keys])
+    assert got["clips"][0]["duration"] == pytest.approx((frames - 1) / 24, abs=1e-4)
+    for person, rig in zip(got["people"], rigs):
+        # three.js drops the ':' from node names (PropertyBinding.sanitizeNodeName).
+        assert person["names"][0].endswith("mixamorigHips") and len(person["names"]) == 27
+        played = np.asarray(person["joints"])[:, :22] / 100
+        assert np.linalg.norm(played - rig_positions(rig)[keys], axis=-1).max() < MM
+        verts = np.asarray(person["vertices"]) / 100
+        for i, f in enumerate(keys):
+            assert np.linalg.norm(verts[i] - _skinned(rig, f), axis=-1).max() < MM
+    # The last key is the motion's last pose (lifted off the floor at most).
+    last = rig_positions(rigs[0])[-1] - people[0][-1]
+    assert np.abs(last[:, [0, 2]]).max() < MM and np.ptp(last[:, 1]) < MM

@@ -21,7 +21,7 @@ router = APIRouter(prefix="/api", tags=["motions"])
 
 
 class BvhFps(IntEnum):
-    """The BVH export's frame rates (`bvh.FPS_CHOICES`); an enum, as a query string "24"
+    """The BVH and GLB exports' frame rates (`bvh.FPS_CHOICES`); an enum, as a query string "24"
     validates into it (a Literal of ints takes no strings)."""
     FPS_20 = 20
     FPS_24 = 24
@@ -64,18 +64,21 @@ def export_motion(motion_id: str, repo: RepoDep,
                   mesh: Annotated[bool, Query(description="GLB: with the skinned mesh (false: "
                                                           "skeletons and animation only)")] = True,
                   fps: Annotated[BvhFps, Query(
-                      description="BVH: frames per second (resampled; the motion is 20)")] = BvhFps.FPS_20,
-                  units: Annotated[Literal["m", "cm"], Query(description="BVH: m or cm")] = "m",
+                      description="BVH and GLB: frames per second (resampled keeping the last "
+                                  "pose; the motion is 20)")] = BvhFps.FPS_20,
+                  units: Annotated[Literal["m", "cm"], Query(description="BVH and GLB: m or cm")] = "m",
                   up: Annotated[Literal["y", "z"], Query(
                       description="BVH: up axis, y or z (z: facing -Y, as in Blender)")] = "y",
                   names: Annotated[Literal["smpl", "mixamo"], Query(
-                      description="BVH: joint names, smpl or mixamo (Hips, LeftUpLeg, …)")] = "smpl",
+                      description="BVH and GLB: joint names, smpl or mixamo (mixamorig:Hips, "
+                                  "mixamorig:LeftUpLeg, …; in the GLB with Mixamo's bone axes "
+                                  "and end bones)")] = "smpl",
                   ) -> Response:
     motion = _load(repo, motion_id)
     if format == "glb":
         from interplay.motion.formats.gltf import MEDIA_TYPE, write_glb
         data = write_glb([p.astype("float64") for p in motion.people], fps=motion.fps, mesh=mesh,
-                         name=motion.prompt or "motion")
+                         name=motion.prompt or "motion", out_fps=int(fps), units=units, names=names)
         name = export_name(motion.id, motion.prompt, "glb", "" if mesh else "-skeleton")
         return Response(data, media_type=MEDIA_TYPE,
                         headers={"Content-Disposition": content_disposition(name)})
