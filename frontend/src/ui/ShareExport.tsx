@@ -1,15 +1,20 @@
 import { useState } from "react";
 import { exportUrl, shareUrl } from "../api/client";
 import { useStudio } from "../store";
+import { DEFAULT_PRESETS, FPS_CHOICES, type Presets, describePresets, withPresets } from "./exportPresets";
 import { personName } from "./format";
 
 /** Share link (copied to the clipboard and shown) and downloads: BVH per person, JSON, GLB
- * (everyone in one file). */
+ * (everyone in one file), with the presets (frame rate, units, joint names; BVH's up axis)
+ * chosen under "Presets". */
 export function ShareExport() {
   const motionId = useStudio((s) => s.motionId);
   const persons = useStudio((s) => s.motionPersons);
   const done = useStudio((s) => s.stream.phase === "done");
   const [copied, setCopied] = useState<{ id: string; url: string; ok: boolean } | null>(null);
+  const [presets, setPresets] = useState<Presets>(DEFAULT_PRESETS);
+  const bvhUrl = (id: string, p: number) => withPresets(exportUrl(id, "bvh", p), "bvh", presets);
+  const glbUrl = (id: string) => withPresets(exportUrl(id, "glb"), "glb", presets);
   const ready = Boolean(motionId && done);
   const link = copied && copied.id === motionId ? copied : null;
 
@@ -30,7 +35,7 @@ export function ShareExport() {
     if (!motionId) return;
     for (let p = 0; p < persons; p++) {
       const a = document.createElement("a");
-      a.href = exportUrl(motionId, "bvh", p);
+      a.href = bvhUrl(motionId, p);
       a.download = `interplay-${motionId}-person${p + 1}.bvh`; // Person 1 → person1 (the API names it so too)
       document.body.appendChild(a);
       a.click();
@@ -50,8 +55,9 @@ export function ShareExport() {
             key={p}
             className={`button${ready ? "" : " disabled"}`}
             data-testid={`export-bvh-${p}`}
-            href={ready && motionId ? exportUrl(motionId, "bvh", p) : undefined}
+            href={ready && motionId ? bvhUrl(motionId, p) : undefined}
             aria-disabled={!ready}
+            title={`BVH: ${describePresets(presets, "bvh")}`}
             download
           >
             BVH{persons === 2 ? ` · ${personName(p)}` : ""}
@@ -74,15 +80,51 @@ export function ShareExport() {
         <a
           className={`button${ready ? "" : " disabled"}`}
           data-testid="export-glb"
-          href={ready && motionId ? exportUrl(motionId, "glb") : undefined}
+          href={ready && motionId ? glbUrl(motionId) : undefined}
           aria-disabled={!ready}
           aria-label="Download GLB"
-          title="glTF binary: a skinned character per person and one animation for everyone (Blender, Unity, Unreal, three.js)"
+          title={`glTF binary: a skinned character per person and one animation for everyone (Blender, Unity, Unreal, three.js); ${describePresets(presets, "glb")}`}
           download
         >
           GLB
         </a>
       </div>
+      <details className="export-presets" data-testid="export-presets">
+        <summary className="muted small">Presets: {describePresets(presets, "bvh")}</summary>
+        <div className="button-row">
+          <label>
+            fps{" "}
+            <select data-testid="preset-fps" value={presets.fps}
+              onChange={(e) => setPresets({ ...presets, fps: Number(e.target.value) as Presets["fps"] })}>
+              {FPS_CHOICES.map((f) => <option key={f} value={f}>{f}</option>)}
+            </select>
+          </label>
+          <label>
+            units{" "}
+            <select data-testid="preset-units" value={presets.units}
+              onChange={(e) => setPresets({ ...presets, units: e.target.value as Presets["units"] })}>
+              <option value="m">m</option>
+              <option value="cm">cm</option>
+            </select>
+          </label>
+          <label>
+            names{" "}
+            <select data-testid="preset-names" value={presets.names}
+              onChange={(e) => setPresets({ ...presets, names: e.target.value as Presets["names"] })}>
+              <option value="smpl">SMPL</option>
+              <option value="mixamo">Mixamo</option>
+            </select>
+          </label>
+          <label title="BVH only: glTF is Y up">
+            up (BVH){" "}
+            <select data-testid="preset-up" value={presets.up}
+              onChange={(e) => setPresets({ ...presets, up: e.target.value as Presets["up"] })}>
+              <option value="y">Y</option>
+              <option value="z">Z (Blender)</option>
+            </select>
+          </label>
+        </div>
+      </details>
       {link && (
         <div className="share-link">
           <input readOnly value={link.url} data-testid="share-url" aria-label="Share link" onFocus={(e) => e.target.select()} />
