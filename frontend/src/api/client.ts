@@ -1,6 +1,6 @@
 // Typed REST client for the studio API. Every non-2xx answer becomes an ApiError
 // carrying the server's readable `detail` message.
-import type { EditRequest, ExportFormat, JobCreated, JobRequest, JobStatus, Motion, MotionListItem, ReactRequest, Skeleton, Version } from "./types";
+import type { EditRequest, ExportFormat, JobCreated, JobRequest, JobStatus, Motion, MotionListItem, MotionPage, ReactRequest, Skeleton, Version } from "./types";
 import { CLIENT_HEADER, clientId } from "./clientId";
 
 export class ApiError extends Error {
@@ -67,9 +67,16 @@ export function getJob(jobId: string): Promise<JobStatus> {
 
 /** The motions this browser made, newest first (at most `limit`, 1–50). */
 export async function listMotions(limit = 20): Promise<MotionListItem[]> {
+  return (await listMotionPage(limit)).motions;
+}
+
+/** One page of the motions this browser made, newest first: `limit` (1–50) of them after the
+ * motion `after` (the previous page's `next`); `next` is null on the last page, `total` counts
+ * them all. */
+export function listMotionPage(limit = 20, after: string | null = null): Promise<MotionPage> {
   const q = new URLSearchParams({ client: clientId(), limit: String(limit) });
-  const body = await request<{ motions: MotionListItem[] }>(`/api/motions?${q}`);
-  return body.motions;
+  if (after) q.set("after", after);
+  return request<MotionPage>(`/api/motions?${q}`);
 }
 
 /** Generate plan segment `index` of a stored motion again (a new seed), in place: the new

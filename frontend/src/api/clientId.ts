@@ -48,3 +48,37 @@ function safeStorage(): Storage | null {
     return null;
   }
 }
+
+// Opening the same library in another browser: a link carrying the id (`/?library=<id>`).
+// Whoever has the link lists (and adds to) that library, as with any bearer token; it is never
+// part of a motion's share link.
+const PREVIOUS_KEY = "interplay-client-previous";
+export const LIBRARY_PARAM = "library";
+
+/** The link that opens this library (`id`'s My motions) in another browser. */
+export function libraryLink(id: string, origin: string): string {
+  return `${origin}/?${LIBRARY_PARAM}=${encodeURIComponent(id)}`;
+}
+
+/** The library id a URL's query carries, or null (none, or not an id's shape). */
+export function linkedLibrary(search: string): string | null {
+  const id = new URLSearchParams(search).get(LIBRARY_PARAM);
+  return id && CLIENT_ID.test(id) ? id : null;
+}
+
+/** Make `id` this browser's client id (kept in storage): its My motions is then that library,
+ * and what this browser makes is added to it. The id it had before is kept aside (not lost);
+ * answers it, or null when it was the same or there was none. */
+export function adoptClientId(id: string, storage: Pick<Storage, "getItem" | "setItem"> | null = safeStorage()): string | null {
+  if (!CLIENT_ID.test(id)) throw new Error(`not a client id: ${id}`);
+  let before: string | null = memo;
+  try {
+    before ??= storage?.getItem(KEY) ?? null;
+    if (before && before !== id) storage?.setItem(PREVIOUS_KEY, before);
+    storage?.setItem(KEY, id);
+  } catch {
+    /* not kept: this page shows the library while it is open */
+  }
+  memo = id;
+  return before && before !== id ? before : null;
+}

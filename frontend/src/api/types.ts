@@ -65,6 +65,15 @@ export interface MotionListItem {
   first_frame: Vec3[][];
 }
 
+/** GET /api/motions?client=…: one page of My motions. */
+export interface MotionPage {
+  motions: MotionListItem[];
+  /** The `after` of the next page; null on the last. */
+  next: string | null;
+  /** How many motions the client made in all. */
+  total: number;
+}
+
 /** GET /api/jobs/{id}. */
 export interface JobStatus {
   job_id: string;
@@ -184,7 +193,7 @@ export type StreamEvent =
       confirmed: Record<string, boolean>;
       checks: Record<string, unknown>;
       instructions: Instruction[];
-      verdict: "ok" | "correct" | string;
+      verdict: "ok" | "correct" | "failed" | "not_covered" | string;
     }
   | {
       type: "correction";

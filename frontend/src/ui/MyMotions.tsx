@@ -1,7 +1,7 @@
-import { useEffect } from "react";
+import { useEffect, useState } from "react";
 import { useShallow } from "zustand/react/shallow";
 import type { MotionListItem } from "../api/types";
-import { refreshLibrary, useLibrary } from "../library";
+import { loadMore, refreshLibrary, thisLibraryLink, useLibrary } from "../library";
 import { openMotion, showInUrl } from "../studio";
 import { useStudio } from "../store";
 import { ago, thumbnail } from "./thumbnail";
@@ -29,10 +29,40 @@ function what(item: MotionListItem): string | null {
   return e.prompt ? `edit: ${e.prompt}` : "edit";
 }
 
-/** "My motions": what this browser made, newest first; a click opens one. */
+/** "Open in another browser": the library's link, copied and shown. */
+function LibraryLink() {
+  const [link, setLink] = useState<{ url: string; copied: boolean } | null>(null);
+  const copy = async () => {
+    const url = thisLibraryLink();
+    let copied = true;
+    try {
+      await navigator.clipboard.writeText(url);
+    } catch {
+      copied = false; // no clipboard permission: the link is shown to copy by hand
+    }
+    setLink({ url, copied });
+  };
+  return (
+    <div className="library__link">
+      <button className="link small" data-testid="library-link" onClick={copy} title="A link that opens this list (and adds to it) in another browser">
+        Open in another browser…
+      </button>
+      {link && (
+        <>
+          <input readOnly value={link.url} data-testid="library-link-url" aria-label="Library link" onFocus={(e) => e.target.select()} />
+          <span className="muted small">
+            {link.copied ? "Copied. " : ""}Whoever opens this link sees these motions and adds to them: share it only with yourself.
+          </span>
+        </>
+      )}
+    </div>
+  );
+}
+
+/** "My motions": what this browser made, newest first, a page at a time; a click opens one. */
 export function MyMotions() {
   const lib = useLibrary(
-    useShallow((s) => ({ items: s.items, loaded: s.loaded, loading: s.loading, error: s.error, open: s.open, notice: s.notice, setOpen: s.setOpen })),
+    useShallow((s) => ({ items: s.items, next: s.next, total: s.total, loaded: s.loaded, loading: s.loading, error: s.error, open: s.open, notice: s.notice, setOpen: s.setOpen })),
   );
   const parents = useStudio((s) => s.skeleton?.parents ?? null);
   const current = useStudio((s) => s.motionId);
@@ -54,7 +84,7 @@ export function MyMotions() {
           aria-controls="library-list"
           onClick={() => lib.setOpen(!lib.open)}
         >
-          {lib.open ? "Hide" : `Show${lib.items.length ? ` (${lib.items.length})` : ""}`}
+          {lib.open ? "Hide" : `Show${lib.total ? ` (${lib.total})` : ""}`}
         </button>
       </div>
       {lib.open && (
@@ -100,6 +130,17 @@ export function MyMotions() {
               );
             })}
           </ol>
+          {lib.items.length > 0 && (
+            <p className="muted small library__count" data-testid="library-count">
+              {lib.items.length === lib.total ? `All ${lib.total} shown` : `${lib.items.length} of ${lib.total} shown`}
+            </p>
+          )}
+          {lib.next && (
+            <button className="small" data-testid="library-more" onClick={() => void loadMore()} disabled={lib.loading}>
+              {lib.loading ? "Loading…" : `Show ${Math.min(20, lib.total - lib.items.length)} more`}
+            </button>
+          )}
+          {lib.items.length > 0 && <LibraryLink />}
         </>
       )}
     </section>
