@@ -73,11 +73,12 @@ test("people are Person 1 and Person 2 on the page, person1 and person2 in file 
   await expect(page.getByTestId("export-bvh-1")).toHaveText("BVH · Person 2");
   const one = page.waitForEvent("download");
   await page.getByTestId("export-bvh-1").click();
-  expect((await one).suggestedFilename()).toBe(`interplay-${motion_id}-person2.bvh`);
+  expect((await one).suggestedFilename()).toBe(`interplay-two-people-shake-hands-${motion_id}-person2.bvh`);
   const names: string[] = [];
   page.on("download", (d) => names.push(d.suggestedFilename()));
   await page.getByTestId("export-bvh-both").click();
-  await expect.poll(() => names.sort()).toEqual([`interplay-${motion_id}-person1.bvh`, `interplay-${motion_id}-person2.bvh`]);
+  const named = `interplay-two-people-shake-hands-${motion_id}`;
+  await expect.poll(() => names.sort()).toEqual([`${named}-person1.bvh`, `${named}-person2.bvh`]);
   await page.getByTestId("tool-path").click();
   await expect(page.getByTestId("path-person-0")).toHaveText("Person 1");
   await expect(page.getByTestId("path-person-1")).toHaveText("Person 2");

@@ -27,7 +27,7 @@ for (const persons of [1, 2] as const) {
     const download = page.waitForEvent("download");
     await button.click();
     const file = await download;
-    expect(file.suggestedFilename()).toBe(`interplay-${id}.glb`);
+    expect(file.suggestedFilename()).toBe(`interplay-${persons === 1 ? "a-person-jumps" : "two-people-dance-salsa"}-${id}.glb`);
     const bytes = readFileSync((await file.path())!);
     const glb = readGlb(bytes);
     expect(glb.magic).toBe("glTF");

@@ -1,5 +1,6 @@
 import { useState } from "react";
 import { exportUrl, shareUrl } from "../api/client";
+import { exportName } from "../api/filenames";
 import { useStudio } from "../store";
 import { DEFAULT_PRESETS, FPS_CHOICES, type Presets, describePresets, withPresets } from "./exportPresets";
 import { personName } from "./format";
@@ -11,6 +12,10 @@ export function ShareExport() {
   const motionId = useStudio((s) => s.motionId);
   const persons = useStudio((s) => s.motionPersons);
   const done = useStudio((s) => s.stream.phase === "done");
+  // the motion's prompt (its plan's; the form may have been edited since) names the downloads,
+  // as the API's Content-Disposition does: interplay-<prompt words>-<id>.<ext>
+  const named = useStudio((s) => (typeof s.stream.plan?.prompt === "string" ? s.stream.plan.prompt : s.prompt));
+  const fileName = (ext: string, suffix = "") => (motionId ? exportName(motionId, named, ext, suffix) : undefined);
   const [copied, setCopied] = useState<{ id: string; url: string; ok: boolean } | null>(null);
   const [presets, setPresets] = useState<Presets>(DEFAULT_PRESETS);
   const bvhUrl = (id: string, p: number) => withPresets(exportUrl(id, "bvh", p), "bvh", presets);
@@ -36,7 +41,7 @@ export function ShareExport() {
     for (let p = 0; p < persons; p++) {
       const a = document.createElement("a");
       a.href = bvhUrl(motionId, p);
-      a.download = `interplay-${motionId}-person${p + 1}.bvh`; // Person 1 → person1 (the API names it so too)
+      a.download = exportName(motionId, named, "bvh", `-person${p + 1}`); // Person 1 → person1 (the API names it so too)
       document.body.appendChild(a);
       a.click();
       a.remove();
@@ -58,7 +63,7 @@ export function ShareExport() {
             href={ready && motionId ? bvhUrl(motionId, p) : undefined}
             aria-disabled={!ready}
             title={`BVH: ${describePresets(presets, "bvh")}`}
-            download
+            download={fileName("bvh", `-person${p + 1}`)}
           >
             BVH{persons === 2 ? ` · ${personName(p)}` : ""}
           </a>
@@ -73,7 +78,7 @@ export function ShareExport() {
           data-testid="export-json"
           href={ready && motionId ? exportUrl(motionId, "json") : undefined}
           aria-disabled={!ready}
-          download
+          download={fileName("json")}
         >
           JSON
         </a>
@@ -84,7 +89,7 @@ export function ShareExport() {
           aria-disabled={!ready}
           aria-label="Download GLB"
           title={`glTF binary: a skinned character per person and one animation for everyone (Blender, Unity, Unreal, three.js); ${describePresets(presets, "glb")}`}
-          download
+          download={fileName("glb")}
         >
           GLB
         </a>
