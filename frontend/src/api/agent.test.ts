@@ -6,6 +6,7 @@ import {
   instructionOutcomes,
   plainReason,
   reduceAgent,
+  roundBadge,
   segmentVerdict,
   type SegmentProgress,
 } from "./agent";
@@ -189,5 +190,36 @@ describe("verdicts and outcomes in words", () => {
     expect(plainReason("the captions ('a person stands') hardly agree with 'a person jumps'")).toBe(
       "the motion hardly matches “a person jumps” (it shows “a person stands”)",
     );
+  });
+});
+
+describe("verdicts read honestly (issue 26.4)", () => {
+  it("calls a kept correction that did not raise the score rejected, unless the review after it passed", () => {
+    const r0 = round(0, "correct", [TOUCH]);
+    const flat = { round: 1, instruction: TOUCH, accepted: true, scoreBefore: 0.26, scoreAfter: 0.26 };
+    const still = seg([r0, round(1, "correct", [TOUCH])], [flat]);
+    expect(instructionOutcomes(still, r0, true)[0].outcome).toEqual({ kind: "rejected", text: "rejected: the score did not improve (score 0.26 → 0.26)" });
+    expect(segmentVerdict(still, true).text).not.toMatch(/after|corrected/); // no fix to name
+    const passes = seg([r0, round(1, "ok", [])], [flat]);
+    expect(instructionOutcomes(passes, r0, true)[0].outcome).toEqual({ kind: "accepted", text: "accepted: the review passes now (score 0.26 → 0.26)" });
+    expect(segmentVerdict(passes, true)).toEqual({ kind: "corrected", text: "corrected: re-generated with a new seed" });
+    // a gain too small for two places is shown with three
+    const small = seg([r0, round(1, "correct", [TOUCH])], [{ ...flat, scoreBefore: 0.261, scoreAfter: 0.264 }]);
+    expect(instructionOutcomes(small, r0, true)[0].outcome.text).toBe("accepted (score 0.261 → 0.264)");
+  });
+
+  it("shows failed and not_covered verdicts as such, with what was shown instead", () => {
+    const failedRound = { ...round(1, "failed", [TOUCH]), summary: "the person stands still" };
+    const failed = segmentVerdict(seg([round(0, "correct", [TOUCH]), failedRound]), false);
+    expect(failed).toEqual({ kind: "failed", text: "failed: hands never meet (“shake hands” needs a touch) — it shows “the person stands still”" });
+    const uncovered = seg([{ ...round(0, "not_covered", []), summary: "the person walks" }]);
+    expect(segmentVerdict(uncovered, true, "a person skips rope (nearest capture)")).toEqual({
+      kind: "not-covered",
+      text: "not in the library — showing the nearest: a person skips rope (nearest capture)",
+    });
+    expect(segmentVerdict(uncovered, true).text).toBe("not in the library — showing the nearest: the person walks");
+    expect(roundBadge("failed")).toEqual({ kind: "failed", text: "failed" });
+    expect(roundBadge("not_covered")).toEqual({ kind: "not-covered", text: "not in the library" });
+    expect(roundBadge("correct").text).toBe("needs correction");
   });
 });

@@ -5,7 +5,10 @@ import type { Instruction, StreamEvent } from "./types";
 export interface ReviewRound {
   round: number;
   captions: Record<string, string>;
+  /** The reviewer's one-sentence caption of what the motion shows. */
+  summary?: string;
   score: number;
+  /** ok | correct (needs correction: corrections follow) | failed | not_covered. */
   verdict: string;
   instructions: Instruction[];
 }
@@ -49,6 +52,7 @@ export function reduceAgent(state: AgentState, ev: StreamEvent): AgentState {
       const round: ReviewRound = {
         round: ev.round,
         captions: ev.captions ?? {},
+        ...(ev.summary ? { summary: ev.summary } : {}),
         score: ev.score,
         verdict: ev.verdict,
         instructions: ev.instructions ?? [],
@@ -153,7 +157,20 @@ export function plainReason(reason: string | undefined): string {
   return reason;
 }
 
-const score = (x: number | null) => (x === null || !Number.isFinite(x) ? "–" : x.toFixed(2));
+const score = (x: number | null, digits = 2) => (x === null || !Number.isFinite(x) ? "–" : x.toFixed(digits));
+
+/** "score 0.24 → 0.31"; three places where two would read the same number twice. */
+function scores(c: Correction): string {
+  const digits = c.scoreAfter !== null && score(c.scoreBefore) === score(c.scoreAfter) && c.scoreBefore !== c.scoreAfter ? 3 : 2;
+  return `score ${score(c.scoreBefore, digits)} → ${score(c.scoreAfter, digits)}`;
+}
+
+/** Whether an applied correction raised the score. */
+export const improved = (c: Correction) => c.scoreAfter !== null && c.scoreAfter > c.scoreBefore + 1e-6;
+
+/** Whether a correction counts as a fix: kept, and it raised the score or the review after it
+ * passed (a check it was asked for passes now). */
+export const fixed = (c: Correction, passedAfter: boolean) => c.accepted && (improved(c) || passedAfter);
 
 export type OutcomeKind = "accepted" | "rejected" | "not-applied" | "not-tried" | "pending";
 
@@ -163,12 +180,20 @@ export interface Outcome {
 }
 
 /** What became of one correction: "accepted (score 0.12 → 0.16)", "rejected: the score
- * dropped (0.14 → 0.11)", "could not apply: part edits need the SPAM model …". */
-export function correctionOutcome(c: Correction): Outcome {
-  const scores = `score ${score(c.scoreBefore)} → ${score(c.scoreAfter)}`;
-  if (c.accepted) return { kind: "accepted", text: `accepted (${scores})` };
+ * dropped (0.14 → 0.11)", "could not apply: part edits need the SPAM model …". One the reviewer
+ * kept without raising the score is "rejected: the score did not improve", unless the review
+ * after it passed (`passedAfter`: then what it was asked for shows now, and it says so). */
+export function correctionOutcome(c: Correction, passedAfter = false): Outcome {
+  if (c.accepted && improved(c)) return { kind: "accepted", text: `accepted (${scores(c)})` };
+  if (c.accepted && passedAfter) return { kind: "accepted", text: `accepted: the review passes now (${scores(c)})` };
+  if (c.accepted) return { kind: "rejected", text: `rejected: the score did not improve (${scores(c)})` };
   if (c.scoreAfter === null) return { kind: "not-applied", text: `could not apply: ${plainReason(c.reason) || "no reason given"}` };
-  return { kind: "rejected", text: `rejected: ${plainReason(c.reason) || "it did not help"} (${scores})` };
+  return { kind: "rejected", text: `rejected: ${plainReason(c.reason) || "it did not help"} (${scores(c)})` };
+}
+
+/** Whether the review after correction round `round` (the round's own review) passed. */
+function passedAfter(seg: SegmentProgress, round: number): boolean {
+  return seg.reviews.find((r) => r.round === round)?.verdict === "ok";
 }
 
 const sameInstruction = (a: Instruction, b: Instruction) =>
@@ -183,12 +208,13 @@ export function instructionOutcomes(
 ): { instruction: Instruction; outcome: Outcome }[] {
   const tried = seg.corrections.filter((c) => c.round === r.round + 1);
   const rejected = tried.some((c) => !c.accepted && c.scoreAfter !== null);
+  const passed = passedAfter(seg, r.round + 1);
   const used = new Set<Correction>();
   return r.instructions.map((instruction) => {
     const c = tried.find((x) => !used.has(x) && sameInstruction(x.instruction, instruction));
     if (c) {
       used.add(c);
-      return { instruction, outcome: correctionOutcome(c) };
+      return { instruction, outcome: correctionOutcome(c, passed) };
     }
     if (rejected) return { instruction, outcome: { kind: "not-tried", text: "not tried: an earlier correction in this round was rejected" } };
     if (!finished) return { instruction, outcome: { kind: "pending", text: "waiting…" } };
@@ -196,31 +222,53 @@ export function instructionOutcomes(
   });
 }
 
-export type VerdictKind = "passed" | "corrected" | "failed" | "pending";
+export type VerdictKind = "passed" | "corrected" | "failed" | "not-covered" | "pending";
 
 export interface Verdict {
   kind: VerdictKind;
   text: string;
 }
 
-/** A segment's review outcome in words: "passed", "corrected: left arm edited (…)" or
- * "failed: hands never meet (…)"; pending while it is still generated or reviewed. The
- * reviewer's own verdict "correct" means "needs correction", so it is never shown as is.
- * `finished`: the job is over (a stored motion, or done / failed), so no more rounds come. */
-export function segmentVerdict(seg: SegmentProgress | undefined, finished: boolean): Verdict {
+/** A review round's badge: the reviewer's verdict in words ("correct" means needs correction). */
+export function roundBadge(verdict: string): { kind: string; text: string } {
+  if (verdict === "ok") return { kind: "ok", text: "passed" };
+  if (verdict === "failed") return { kind: "failed", text: "failed" };
+  if (verdict === "not_covered") return { kind: "not-covered", text: "not in the library" };
+  return { kind: "correct", text: "needs correction" };
+}
+
+/** What a round says the motion shows: its summary, else the body's caption. */
+function showing(r: ReviewRound): string {
+  return (r.summary || r.captions.body || "").trim();
+}
+
+/** A segment's review outcome in words: "passed", "corrected: left arm edited (…)",
+ * "failed: hands never meet (…) — it shows “…”" or "not in the library — showing the nearest:
+ * …"; pending while it is still generated or reviewed. The reviewer's own verdict "correct"
+ * means "needs correction", so it is never shown as is. A correction counts as a fix only if
+ * it raised the score or the review after it passed (`fixed`).
+ * `finished`: the job is over (a stored motion, or done / failed), so no more rounds come.
+ * `shown`: what the plan says was shown for the segment (its `coverage.shown`), if anything. */
+export function segmentVerdict(seg: SegmentProgress | undefined, finished: boolean, shown?: string): Verdict {
   const last = seg?.reviews[seg.reviews.length - 1];
   if (!seg || !last) {
     if (finished || seg?.status === "done") return { kind: "pending", text: "not reviewed" };
     return { kind: "pending", text: seg?.status === "generating" ? "generating…" : "waiting…" };
   }
-  const fixes = seg.corrections.filter((c) => c.accepted).map((c) => describeFix(c.instruction));
+  const fixes = seg.corrections.filter((c) => fixed(c, passedAfter(seg, c.round))).map((c) => describeFix(c.instruction));
   if (last.verdict === "ok") return fixes.length ? { kind: "corrected", text: `corrected: ${fixes.join("; ")}` } : { kind: "passed", text: "passed" };
+  if (last.verdict === "not_covered") {
+    const nearest = (shown ?? "").trim() || showing(last);
+    return { kind: "not-covered", text: `not in the library — showing the nearest${nearest ? `: ${nearest}` : ""}` };
+  }
   // still needs correction: the segment is not done while its correction rounds run
-  if (!finished && seg.status !== "done") return { kind: "pending", text: "needs correction — correcting…" };
+  if (last.verdict !== "failed" && !finished && seg.status !== "done") return { kind: "pending", text: "needs correction — correcting…" };
   const why = plainReason(last.instructions[0]?.reason) || describeInstruction(last.instructions[0] ?? { kind: "regenerate" });
   const more = last.instructions.length > 1 ? ` (+${last.instructions.length - 1} more)` : "";
   const partly = fixes.length ? ` — after ${fixes.join("; ")}` : "";
-  return { kind: "failed", text: `failed: ${why}${more}${partly}` };
+  const seen = showing(last);
+  const shows = seen && !why.includes(seen) ? ` — it shows “${seen}”` : "";
+  return { kind: "failed", text: `failed: ${why}${more}${partly}${shows}` };
 }
 
 interface StoredReview {

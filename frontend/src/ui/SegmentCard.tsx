@@ -1,4 +1,5 @@
-import { describeInstruction, instructionOutcomes, partWords, plainReason, segmentVerdict, type SegmentProgress } from "../api/agent";
+import { describeInstruction, instructionOutcomes, partWords, plainReason, roundBadge, segmentVerdict, type SegmentProgress } from "../api/agent";
+import "./agent.css";
 import type { PlanSegment } from "../api/types";
 import { rerunSegment } from "../directing/actions";
 import { FPS } from "../store";
@@ -27,7 +28,8 @@ interface Props {
 export function SegmentCard({ index, seg, progress, canRerun, canInbetween, finished = false }: Props) {
   const n = peopleCount(seg.persons);
   const base = (seg as { base?: string }).base;
-  const verdict = progress ? segmentVerdict(progress, finished) : null;
+  const shown = (seg as { coverage?: { shown?: string } }).coverage?.shown;
+  const verdict = progress ? segmentVerdict(progress, finished, shown) : null;
   return (
     <li className="segment" data-testid={`segment-${index}`}>
       <div className="segment__head">
@@ -56,7 +58,7 @@ export function SegmentCard({ index, seg, progress, canRerun, canInbetween, fini
         <div key={r.round} className="review" data-testid="review">
           <div className="review__head small">
             <span>{r.round === 0 ? "review" : `review after round ${r.round}`}</span>
-            <span className={`badge badge--${r.verdict === "ok" ? "ok" : "correct"}`}>{r.verdict === "ok" ? "passed" : "needs correction"}</span>
+            <span className={`badge badge--${roundBadge(r.verdict).kind}`}>{roundBadge(r.verdict).text}</span>
             <span className="muted" title="How well the motion matches the text (−1 … 1)">
               score {Number.isFinite(r.score) ? r.score.toFixed(2) : "–"}
             </span>
