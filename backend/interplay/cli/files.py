@@ -56,6 +56,42 @@ def cmd_export(args) -> int:
     return 0
 
 
+def cmd_export_floor(args) -> int:
+    """The floor pass measured on the library: for every clip that goes low (a wrist or knee
+    within 25 cm of the floor), how deep hands, knees and feet go under it, of the GLB's mesh
+    and of the BVH's joints and end sites, before the pass (the solved rig) and after (the
+    export's rig)."""
+    import numpy as np
+
+    from interplay.motion.clip import default_clips
+    from interplay.motion.formats.floor import TOLERANCE, floor_pass, goes_low, worst
+    from interplay.motion.kinematics import floor_height
+    from interplay.motion.rig import solve_rig
+    rows: list[dict] = []
+    for clip in default_clips():
+        people = [np.asarray(p, np.float64) for p in clip.people]
+        floor = floor_height(people)
+        if not goes_low(people, floor):
+            continue
+        for k, joints in enumerate(people):
+            rig = solve_rig(joints, floor=floor)
+            row: dict = {"clip": clip.id, "person": k}
+            for body in ("mesh", "joints"):
+                row[body, "before"] = worst(rig, floor, body)
+                row[body, "after"] = worst(floor_pass(rig, floor, body)[0], floor, body)
+            rows.append(row)
+    print(f"{len(rows)} people in {len({r['clip'] for r in rows})} library clips that go low; "
+          f"cm under the floor (worst frame), people over {TOLERANCE * 100:.0f} cm")
+    print(f"{'body':<7} {'region':<6} {'before: worst':>14} {'> 1 cm':>7} {'after: worst':>13} {'> 1 cm':>7}")
+    for body in ("mesh", "joints"):
+        for region in ("hands", "knees", "feet"):
+            b = np.array([r[body, "before"][region] for r in rows])
+            a = np.array([r[body, "after"][region] for r in rows])
+            print(f"{body:<7} {region:<6} {b.max() * 100:>14.1f} {int((b > TOLERANCE).sum()):>7} "
+                  f"{a.max() * 100:>13.1f} {int((a > TOLERANCE).sum()):>7}")
+    return 0
+
+
 def register(sub) -> None:
     p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
     p.add_argument("motion")
@@ -81,3 +117,7 @@ def register(sub) -> None:
     p.add_argument("--no-mesh", action="store_true",
                    help="GLB: skeletons and the animation only, no skinned mesh")
     p.set_defaults(func=cmd_export)
+
+    p = sub.add_parser("export-floor", help="the exports' floor pass measured on the library's "
+                                            "clips that go low (a table)")
+    p.set_defaults(func=cmd_export_floor)

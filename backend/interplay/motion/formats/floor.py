@@ -113,3 +113,18 @@ def floor_pass(rig: Rig, floor: float, body: str = "mesh") -> tuple[Rig, np.ndar
     root = rig.root.copy()
     root[:, 1] += lift
     return Rig(offsets=rig.offsets, root=root, rotations=rig.rotations), lift
+
+
+GOES_LOW = 0.25      # m: a clip "goes low" when a wrist or knee comes this near the floor
+
+
+def goes_low(people: list[np.ndarray], floor: float) -> bool:
+    """Whether any person's wrist or knee comes within GOES_LOW of the floor (acrobatics,
+    kneeling, crawling, lying down: the clips a floor pass is for)."""
+    low = [J[n] for n in REGIONS["hands"] + REGIONS["knees"]]
+    return any(float(p[:, low, 1].min()) - floor < GOES_LOW for p in people)
+
+
+def worst(rig: Rig, floor: float, body: str) -> dict[str, float]:
+    """The deepest any frame's hand, knee and foot goes under the floor (m; negative: above)."""
+    return {region: float(d.max()) for region, d in depths(rig, floor, body).items()}

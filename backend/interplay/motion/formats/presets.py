@@ -67,9 +67,9 @@ def export_rigs(people: Sequence[np.ndarray], fps: float = sk.FPS, out_fps: floa
                 offsets: Sequence[np.ndarray | None] | None = None,
                 floor: float | None = None, body: str = "mesh") -> list[Rig]:
     """Each person's rig as the exports write it: `solve_rig` (head and wrists turned, toes
-    and hands pitched off the floor), `floor.floor_pass` (lifted where a hand, knee or foot
-    of the file's body — "mesh" for the GLB, "joints" for the BVH — would still be under
-    it), then resampled to out_fps keeping the last pose. floor: the
+    and hands pitched off the floor), resampled to out_fps keeping the last pose, then
+    `floor.floor_pass` (lifted where a hand, knee or foot of the file's body — "mesh" for the
+    GLB, "joints" for the BVH — would still be under it). floor: the
     people's one ground (default: `kinematics.floor_height` of them all)."""
     people = [np.asarray(p, np.float64) for p in people]
     ground = floor_height(people) if floor is None else float(floor)
@@ -77,8 +77,8 @@ def export_rigs(people: Sequence[np.ndarray], fps: float = sk.FPS, out_fps: floa
     out = []
     for k, joints in enumerate(people):
         rig = solve_rig(joints, None if offsets is None else offsets[k], fps=fps, floor=ground)
-        rig, _ = floor_pass(rig, ground, body)
-        out.append(resample_rig(rig, fps, rate))
+        # Lifted after resampling, so that no interpolated frame dips either.
+        out.append(floor_pass(resample_rig(rig, fps, rate), ground, body)[0])
     return out
 
 
