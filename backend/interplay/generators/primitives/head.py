@@ -1,0 +1,120 @@
+"""The head as an editable part: look up / down / left / right by an angle, look at a point,
+nod N times, shake N times, each a rotation of the head joint about the neck in the trunk's
+own axes (`body.trunk_axes`: across the shoulders and hips, pelvis → neck, the chest's
+normal), eased in and out over HEAD_EASE_S. Nothing but the head joint moves: every other
+joint stays bit for bit, so "look up" on a walk keeps the walk.
+
+Angles are measured as the rig reads them, on the neck → head bone in the trunk frame
+(`pitch`: up is positive, `yaw`: towards the person's left is positive). The skeleton has no
+head orientation beyond that bone, which leans ~30° forward of the neck in the rest pose: a
+turn (yaw) shows as the head joint swinging sideways by that lean, not as a twist.
+
+Shapes: joints (T, 22, 3) metres; angles in degrees.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from interplay.generators.primitives.body import rotation, trunk_axes
+from interplay.generators.primitives.timing import bumps, phase
+from interplay.motion import skeleton as sk
+from interplay.motion.ik import ease
+
+ACTIONS = ("look_up", "look_down", "look_left", "look_right", "look_at", "nod", "shake")
+DEFAULT_DEG = {"look_up": 35.0, "look_down": 35.0, "look_left": 50.0, "look_right": 50.0,
+               "nod": 22.0, "shake": 35.0}
+MAX_PITCH_DEG = 50.0
+MAX_YAW_DEG = 75.0
+HEAD_EASE_S = 0.3
+
+
+def pitch_yaw(joints: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(pitch, yaw) (T,) in degrees of the neck → head bone in the trunk frame."""
+    j = np.asarray(joints, dtype=np.float64)
+    left, up, chest = trunk_axes(j)
+    v = j[:, sk.HEAD] - j[:, sk.NECK]
+    a, u, c = (v * left).sum(-1), (v * up).sum(-1), (v * chest).sum(-1)
+    return np.degrees(np.arctan2(-c, u)), np.degrees(np.arctan2(a, c))
+
+
+def turn_head(joints: np.ndarray, pitch_deg: np.ndarray, yaw_deg: np.ndarray) -> np.ndarray:
+    """Joints with the head joint turned about the neck: pitched up by `pitch_deg` (about the
+    trunk's left axis), then turned left by `yaw_deg` (about pelvis → neck); (T,) each."""
+    out = np.asarray(joints, dtype=np.float64).copy()
+    left, up, _ = trunk_axes(out)
+    rp = rotation(left, -np.radians(pitch_deg))       # + about left tips the head forward
+    ry = rotation(up, np.radians(yaw_deg))
+    v = out[:, sk.HEAD] - out[:, sk.NECK]
+    v = np.einsum("tij,tj->ti", ry @ rp, v)
+    out[:, sk.HEAD] = out[:, sk.NECK] + v
+    return out
+
+
+def _ramp(t: int) -> np.ndarray:
+    r = max(1, int(round(HEAD_EASE_S * sk.FPS)))
+    r = min(r, max(1, t // 3))
+    idx = np.arange(t, dtype=np.float64)
+    return np.minimum(ease((idx + 1) / r), ease((t - idx) / r))
+
+
+def _rest_angles() -> tuple[float, float]:
+    v = sk.REST_OFFSETS[sk.HEAD]
+    return float(np.degrees(np.arctan2(-v[2], v[1]))), float(np.degrees(np.arctan2(v[0], v[2])))
+
+
+def _look_at_angles(j: np.ndarray, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(pitch, yaw) offsets (T,) that turn the head from where it points now (its bone's
+    angles against the rest pose's) to look at `point` (T, 3)."""
+    left, up, chest = trunk_axes(j)
+    d = np.asarray(point, dtype=np.float64) - j[:, sk.NECK]
+    a, u, c = (d * left).sum(-1), (d * up).sum(-1), (d * chest).sum(-1)
+    want_yaw = np.clip(np.degrees(np.arctan2(a, c)), -MAX_YAW_DEG, MAX_YAW_DEG)
+    want_pitch = np.clip(np.degrees(np.arctan2(u - 0.1, np.hypot(a, c))), -MAX_PITCH_DEG, MAX_PITCH_DEG)
+    p0, y0 = pitch_yaw(j)
+    rp, ry = _rest_angles()
+    v = j[:, sk.HEAD] - j[:, sk.NECK]
+    level = np.hypot((v * left).sum(-1), (v * chest).sum(-1)) > 0.03   # yaw is readable
+    turned = np.where(level, _wrap(y0 - ry), 0.0)
+    return want_pitch - (p0 - rp), _wrap(want_yaw - turned)
+
+
+def _wrap(deg: np.ndarray) -> np.ndarray:
+    return (np.asarray(deg) + 180.0) % 360.0 - 180.0
+
+
+def head(base: np.ndarray, action: str, count: int = 1, degrees: float | None = None,
+         point: np.ndarray | None = None, start: int = 0, end: int | None = None) -> np.ndarray:
+    """The base (T, 22, 3) with the head doing `action` over frames [start, end): a look held
+    (eased in and out), `count` nods (down and back up) or `count` shakes (left, right, back),
+    or a look at `point` (3,) or (T, 3) world."""
+    if action not in ACTIONS:
+        raise ValueError(f"unknown head action {action!r}; expected one of {ACTIONS}")
+    j = np.asarray(base, dtype=np.float64)
+    end = len(j) if end is None else end
+    if not 0 <= start < end <= len(j):
+        raise ValueError(f"bad frames [{start}, {end}) for {len(j)} frames")
+    sub = j[start:end]
+    t = len(sub)
+    deg = float(degrees if degrees is not None else DEFAULT_DEG.get(action, 0.0))
+    zero = np.zeros(t)
+    if action in ("look_up", "look_down", "look_left", "look_right"):
+        w = _ramp(t)
+        a = min(deg, MAX_PITCH_DEG if action in ("look_up", "look_down") else MAX_YAW_DEG)
+        sign = 1.0 if action in ("look_up", "look_left") else -1.0
+        pitch, yaw = (sign * a * w, zero) if action in ("look_up", "look_down") else (zero, sign * a * w)
+    elif action == "look_at":
+        if point is None:
+            raise ValueError("look_at needs a point")
+        p, y = _look_at_angles(sub, np.broadcast_to(point, (t, 3)))
+        w = _ramp(t)
+        pitch, yaw = w * p, w * y
+    elif action == "nod":
+        pitch, yaw = -deg * bumps(t, count, hold=0.0), zero
+    else:
+        cycle, ph = phase(t, count)
+        yaw = np.where(cycle >= 0, deg * np.sin(2 * np.pi * ph), 0.0)
+        pitch = zero
+    out = j.copy()
+    out[start:end] = turn_head(sub, pitch, yaw)
+    return out

@@ -1,0 +1,148 @@
+"""The primitives by name (`PRIMITIVES`, from the plain data table `table.PRIMITIVE_TABLE`),
+each found from its text through the MiniLM encoder (`find`: cosine similarity between the
+text and each primitive's phrasings, the best phrasing's score per primitive; no pattern per
+phrase), and built on its base posture (`build`: count, seconds, side and the table's fixed
+parameters). Builder names are stable: `BUILDERS` maps each to its pure function.
+
+    prim, sim = find("does some push-ups", get_encoder())     # (PRIMITIVES["push_up"], 0.8…)
+    joints = build(prim, {"count": 3})                         # (T, 22, 3) on a captured prone base
+    joints, entry = make("claps four times", get_encoder())    # found, counted, built
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from interplay.generators.primitives.body import axes
+from interplay.generators.primitives.contacts import hand_contacts
+from interplay.generators.primitives.exercise import arm_circles, jumping_jacks, push_ups, sit_ups
+from interplay.generators.primitives.gait import gait_asymmetric, gait_perturbed
+from interplay.generators.primitives.head import head
+from interplay.generators.primitives.legs import knee_lifts, lunges, squats
+from interplay.generators.primitives.postures import posture
+from interplay.generators.primitives.reach import reach_grasp_carry
+from interplay.generators.primitives.table import PRIMITIVE_TABLE
+from interplay.generators.primitives.timing import seconds_for
+from interplay.motion import skeleton as sk
+from interplay.text.encoder import Encoder
+
+BUILDERS: dict[str, Callable[..., np.ndarray]] = {
+    "hand_contacts": hand_contacts, "knee_lifts": knee_lifts, "squats": squats, "lunges": lunges,
+    "push_ups": push_ups, "sit_ups": sit_ups, "jumping_jacks": jumping_jacks,
+    "arm_circles": arm_circles, "reach_grasp_carry": reach_grasp_carry,
+    "gait_asymmetric": gait_asymmetric, "gait_perturbed": gait_perturbed, "head": head,
+}
+SIDED = {"hand_contacts", "knee_lifts", "lunges", "arm_circles", "gait_asymmetric"}
+PARTNER_AHEAD_M = 1.2      # where a partner stands for "look at the partner" when none is given
+
+
+@dataclass(frozen=True)
+class Primitive:
+    name: str
+    descriptions: tuple[str, ...]
+    posture: str
+    parts: tuple[str, ...]
+    counts: bool
+    seconds: float              # per cycle when it counts, else for the whole move
+    builder: str
+    params: dict = field(default_factory=dict, hash=False)
+
+    def default_seconds(self, count: int = 1) -> float:
+        return seconds_for(count, self.seconds) if self.counts else self.seconds
+
+
+PRIMITIVES: dict[str, Primitive] = {
+    row["name"]: Primitive(name=row["name"], descriptions=tuple(row["descriptions"]),
+                           posture=row["posture"], parts=tuple(row["parts"]),
+                           counts=bool(row["counts"]), seconds=float(row["seconds"]),
+                           builder=row["builder"], params=dict(row["params"]))
+    for row in PRIMITIVE_TABLE
+}
+
+
+_BANKS: dict[tuple[int, tuple[str, ...]], tuple[Encoder, np.ndarray, np.ndarray]] = {}
+
+
+def _bank(encoder: Encoder, names: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
+    """(phrasing embeddings (K, D), the primitive index of each (K,)), once per encoder."""
+    key = (id(encoder), names)
+    if key in _BANKS and _BANKS[key][0] is encoder:
+        return _BANKS[key][1], _BANKS[key][2]
+    texts, owner = [], []
+    for i, n in enumerate(names):
+        for d in PRIMITIVES[n].descriptions:
+            texts.append(d)
+            owner.append(i)
+    emb = np.asarray(encoder.encode(texts), dtype=np.float64)
+    emb /= np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12)
+    _BANKS[key] = (encoder, emb, np.array(owner))
+    return emb, np.array(owner)
+
+
+def rank(text: str, encoder: Encoder, names: tuple[str, ...] | None = None
+         ) -> list[tuple[Primitive, float]]:
+    """Every primitive (or those named) with its similarity to `text`, best first."""
+    names = tuple(names or PRIMITIVES)
+    emb, owner = _bank(encoder, names)
+    q = np.asarray(encoder.encode([text.strip()]), dtype=np.float64)[0]
+    q /= max(float(np.linalg.norm(q)), 1e-12)
+    sims = emb @ q
+    best = np.full(len(names), -1.0)
+    np.maximum.at(best, owner, sims)
+    order = np.argsort(-best)
+    return [(PRIMITIVES[names[i]], float(best[i])) for i in order]
+
+
+def find(text: str, encoder: Encoder, names: tuple[str, ...] | None = None
+         ) -> tuple[Primitive, float]:
+    """The primitive whose phrasings are nearest `text` (cosine), and that similarity."""
+    return rank(text, encoder, names)[0]
+
+
+def build(prim: Primitive, params: dict, base: np.ndarray | None = None) -> np.ndarray:
+    """The primitive's joints (T, 22, 3): on `base` when given, else on its posture held for
+    params["seconds"] (default: its cycles' length). params: count, seconds, side, seat_m,
+    and any of the builder's own keyword arguments (they override the table's)."""
+    p = dict(params)
+    count = int(p.pop("count", 2 if prim.counts else 1) or 1)
+    seconds = float(p.pop("seconds", 0) or prim.default_seconds(count))
+    seat = p.pop("seat_m", None)
+    side = p.pop("side", None)
+    if base is None:
+        kw = {"seat_m": seat} if seat is not None else {}
+        base = posture(prim.posture, seconds, **kw)
+    args = {**prim.params, **p}
+    if side is not None and prim.builder in SIDED:
+        args["side"] = side
+    if prim.builder == "head":
+        if args.get("action") == "look_at" and "point" not in args:
+            args["point"] = base[:, sk.NECK] + PARTNER_AHEAD_M * axes(base)[2]
+        if prim.counts:
+            args["count"] = count
+        return BUILDERS["head"](base, **args)
+    if prim.counts:
+        args["count"] = count
+    return BUILDERS[prim.builder](base, **args)
+
+
+def make(text: str, encoder: Encoder, seconds: float | None = None, base: np.ndarray | None = None
+         ) -> tuple[np.ndarray, dict]:
+    """(joints, entry): the primitive `text` describes, with the count and side its words
+    give, built for `seconds` (or its own length)."""
+    from interplay.generators.retrieval.intent import count_of, side_of
+
+    prim, sim = find(text, encoder)
+    params: dict = {}
+    count = count_of(text) if prim.counts else None
+    if count:
+        params["count"] = count
+    side = side_of(text)
+    if side:
+        params["side"] = side
+    if seconds:
+        params["seconds"] = seconds
+    joints = build(prim, params, base)
+    return joints, {"primitive": prim.name, "similarity": round(sim, 4), **params}
