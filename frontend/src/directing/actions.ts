@@ -4,8 +4,21 @@ import { editMotion, getMotion, rerunSegment as rerunSegmentApi } from "../api/c
 import type { EditRequest, Motion } from "../api/types";
 import { refreshLibrary } from "../library";
 import { fail, generate, openMotion, showInUrl, showMotion, currentTrajectory } from "../studio";
-import { useStudio } from "../store";
+import { frames, playhead, useStudio } from "../store";
+import { keptPosition, type HeldPlayhead } from "../playback/keep";
 import { canRedo, canUndo, current, pushVersion, redo as redoV, undo as undoV } from "./versions";
+
+/** Where playback stands now (to keep it across a new version). */
+function holdPlayhead(): HeldPlayhead {
+  return { pos: playhead.pos, playing: useStudio.getState().playing };
+}
+
+/** Back to where playback stood, on the version now shown (an edit keeps the playhead). */
+function restorePlayhead(held: HeldPlayhead): void {
+  const pos = keptPosition(held.pos, frames.received);
+  playhead.pos = pos;
+  useStudio.setState({ frame: Math.floor(pos), playing: held.playing });
+}
 
 function randomSeed(): number {
   return Math.floor(Math.random() * 2 ** 31);
@@ -20,7 +33,9 @@ async function newVersion(make: (id: string) => Promise<Motion>, label: string |
   useStudio.setState({ editing: true, editLabel: label, error: null });
   try {
     const motion = await make(id);
+    const held = holdPlayhead();
     showMotion(motion);
+    restorePlayhead(held);
     useStudio.setState((st) => ({ versions: pushVersion(st.versions, motion.id) }));
     showInUrl(motion.id, "push");
     void refreshLibrary();
@@ -58,7 +73,9 @@ export function applyPathToMotion(): Promise<boolean> {
 
 async function goTo(id: string | null): Promise<void> {
   if (!id) return;
+  const held = holdPlayhead();
   await openMotion(id);
+  if (useStudio.getState().motionId === id) restorePlayhead(held);
   showInUrl(id, "replace");
 }
 
