@@ -18,6 +18,9 @@ everyday gestures and chores, emotions/styles and real two-person interaction be
 | Przestr/motion-capture, beemsoft/webxr-handtracking-playground, DragonForgedTheArtist/IClone-CMU-Mocap | CMU subsets already in ../shared/data (cmu-bvh, cmu-salsa, cmu-iclone) | CMU terms | as CMU | already in the main set; nothing new there |
 | 414Group/Rotate, a "better-endfield" motions folder, YuanchengLi-Kevin/cmu-mocap-*, cyun9601/CMU-MOCAP-Data, gpdevspace/JEPA_CMU_MoCap, ywchao/baselines, daylanKifky/CMU-Motion-Capture-Database-to-Blender | one or two CMU trials each (18_01/19_01 handshake) or only code that downloads CMU | CMU terms / none | – | nothing worth a source (a single handshake pair at most) |
 | **Bandai Namco Research motion dataset 2** (BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @ 74ead3b) | 2,902 clips, 3 actors: walk, turns, run, wave and raise one/both hands in 7 styles (active, elderly, exhausted, feminine, masculine, normal, youthful) | CC BY-NC 4.0 | **non-commercial only**, for data and weights; attribute | **staged**: the 2,482 clips ../shared/data lacks, `models/data/staged/bandai-namco-2.npz` (opt-in, below) |
+| **ReActIdle** (Enekoassets/ReActIdle @ 90b0ac7) | 26 idle standing takes (16 acted: waiting, fidgeting, looking around; 10 genuine: unaware), one performer per id, BVH, 24 fps, 82k frames (57 min); the snapshot lacks 3 acted takes (≥ 4 MiB) | MIT (LICENSE.txt, "Copyright (c) 2025 [RSAIT]") | commercial use allowed for data and weights; keep the notice | **staged**: `models/data/staged/reactidle.npz` (quiet standing: bases for composition, idle requests) |
+| glimpse-project/glimpse-training-data | CMU's cgspeed BVH release as zip archives per subject range (`mocap/cmuconvert-mb2-*.zip`) | CMU terms | as CMU | not ingested: every archive is over 4 MiB and absent from the snapshot |
+| ubisoft/ubisoft-laforge-lookat, Motorica dance (orangeduck/motorica-retarget), ZeroEGGS | emotional look-at captures, dance, speech gestures | non-commercial research only / not for commercial use | – | left out (research-only terms; dance and gestures are not the families lacking) |
 | LAFAN1 (ubisoft/ubisoft-laforge-animation-dataset) | 77 sequences, 5 actors, ~4.6 h: walk, run, jumps, dance, fight, fight-and-sports, obstacles, **ground (crawl, lie, get up)**, sprint, aiming, push and stumble | CC BY-NC-ND 4.0 (license.txt read) | ND: "You do not have permission … to Share Adapted Material" — our retargeted, resampled clips are adapted material | **left out**: the processed data may not be shared (and `lafan1.zip` is over the 4 MiB snapshot limit anyway) |
 | NuiSI (souljaboy764/nuisi_dataset) | real two-person skeletons from a depth camera (Nuitrack): wave, handshake, high-five, fist-bumps, clap-fist | **no licence** (README cites MILD, Prasad et al. 2022; no LICENSE file) | all rights reserved by default | **left out**: no permission to redistribute; also 15–19 Kinect-style joints without feet orientation |
 | Bütepage et al. HRI data (jbutepage/human_robot_interaction_data) | two-person handshake, waving, rocket and parachute fist-bumps (text skeletons) | **no licence** (README is one line) | all rights reserved | **left out**: no permission |
@@ -28,6 +31,21 @@ everyday gestures and chores, emotions/styles and real two-person interaction be
 | Mixamo, Reallusion ActorCore samples | many actions | not redistributable | – | left out (brief) |
 | KIT whole-body, MoVi, Total Capture, HDM05 full set | exercise, object handling, everyday actions | various (HDM05 CC BY-SA 3.0 — only 11 classes are in a fetchable repository, already in the main set) | – | nothing new reachable |
 | CC0 animation libraries ("free BVH", Truebones, outworldz CMU mirror) | CMU re-exports or hand-keyed clips | CMU terms or unclear | – | only CMU again, or no data in a reachable repository |
+
+Named families after this hunt (real single-person minutes in the main set when the hunt was made, by
+`label_family`; staged sources add no capture to them except where said):
+
+| family asked for | main set (min) | what the hunt found for it |
+|---|---|---|
+| exercise and fitness | 5.6 (squats, elbow-to-knee, arm circles, hops, jumps) | CMU 13/14 (jumping jacks, squats, stretches): over the snapshot limit; LAFAN1 ground work: no-derivatives |
+| seated and chair actions | 0.0 | CMU 15, 111, 113, 114 (sit on stool/chair, get up): over the snapshot limit; nothing else redistributable |
+| climbing and crawling | 0.2 (DeepMimic crawl, roll, get-ups) | CMU 01, 13–15 (ladders, playground), 111 (crawling), 140 (get-ups): over the snapshot limit; cmu-iclone's long climbs are absent (≥ 4 MiB) |
+| martial arts and boxing | 3.9 (kicks, punches, swordplay, karate kata) | CMU 13/14 boxing, 135 karate, 144 kicks/blocks: over the snapshot limit |
+| object handling | 7.2 (deposit, grab high, throw, basketball) | CMU 115 (pick up box), 113 (walk and carry), 143 (catch and throw): over the snapshot limit |
+| everyday gestures and chores | 34.8 (waves, raised hands, bows, calls, traffic signals, washing) | staged: Bandai Namco 2 adds 104 min of waves and raised hands; CMU 79/80 chores (chopping, brushing teeth …): over the snapshot limit |
+| emotions and styles | 45.9 (Bandai Namco's 14 non-normal styles) | staged: Bandai Namco 2 adds 7 styles on walk/run/wave/raise (~2.5 h non-normal); CMU 142 (emotional walks): over the snapshot limit; 100STYLE (CC BY): not reachable |
+| idle / waiting | (few quiet stretches inside other clips) | staged: ReActIdle, MIT, acted and genuine idle standing |
+| real two-person beyond dance | 0 (salsa only, 14 pairs) | CMU 18–23, 33/34 (handshake, high-five, pull, pull up, comfort, pass, arm wrestle, throw-catch): over the snapshot limit; NuiSI, Bütepage: no licence; SBU, InterHuman, Inter-X, InterAct: research-only / NC-SA |
 
 What would close the gaps: CMU's own files. A copy of una-dinosauria/cmu-mocap's BVH for subjects 13–15,
 18–23, 33/34, 56, 75, 79, 80, 86, 90, 111, 113–115, 135, 137, 140–144 (exercise, boxing, climbing,

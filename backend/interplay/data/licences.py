@@ -47,12 +47,20 @@ DEEPMIMIC = Licence(
     'DeepMimic motion data, MIT License, "Copyright (c) 2018 Xue Bin Peng" '
     "(github.com/xbpeng/DeepMimic; the notice is in `deepmimic/LICENSE` of the raw data).")
 
-LICENCES: dict[str, Licence] = {lic.name: lic for lic in (CMU, HDM05, BANDAI_NAMCO, DEEPMIMIC)}
+MIT_REACTIDLE = Licence(
+    "MIT (ReActIdle)", True,
+    "MIT: keep ReActIdle's copyright and permission notice (\"Copyright (c) 2025 [RSAIT]\")",
+    'ReActIdle dataset, MIT License, "Copyright (c) 2025 [RSAIT]" (github.com/Enekoassets/ReActIdle); '
+    "E. Atxa Landa, E. Lazkano, I. Rodriguez, I. Rodríguez-Moreno, I. Irigoien: \"Evaluating Idle "
+    'Animation Believability: a User Perspective", arXiv:2509.05023, 2025.')
+
+LICENCES: dict[str, Licence] = {lic.name: lic for lic in (CMU, HDM05, BANDAI_NAMCO, DEEPMIMIC, MIT_REACTIDLE)}
 
 # Source → its licence (composed clips: per clip, their bases').
 SOURCE_LICENCE: dict[str, Licence] = {
     "cmu-bvh": CMU, "cmu-salsa": CMU, "cmu-8action": CMU, "cmu-iclone": CMU, "cmu-asfamc": CMU,
     "hdm05": HDM05, "bandai-namco": BANDAI_NAMCO, "bandai-namco-2": BANDAI_NAMCO, "deepmimic": DEEPMIMIC,
+    "reactidle": MIT_REACTIDLE,
 }
 
 

@@ -12,6 +12,9 @@ Sources:
   2,902 that ../shared/data/bandai-namco/dataset-2 does not hold): walk, turns, run, waves and
   raised hands in 7 styles, 3 actors; CC BY-NC 4.0 (non-commercial), the same retargeter as
   `bandai-namco` (`interplay.motion.retarget.bandai_namco`).
+- `reactidle`: ReActIdle's idle standing captures (acted and genuine, one performer's takes
+  share a split), MIT (`interplay.motion.retarget.reactidle`). The snapshot lacks three acted
+  takes (files of 4 MiB and more).
 """
 
 from __future__ import annotations
@@ -23,11 +26,12 @@ import time
 from pathlib import Path
 
 from interplay.data.card import _family_lines, _hours, _rate_lines
-from interplay.data.licences import BANDAI_NAMCO
+from interplay.data.licences import BANDAI_NAMCO, MIT_REACTIDLE
 from interplay.data.mirror import Snapshot, SnapshotMissing, mirror_root
 from interplay.data.splits import _stable_rank, add_captions, stratified_split
 from interplay.motion.clip import DATA_DIR, Clip, save_clips
 from interplay.motion.labels import label_family
+from interplay.motion.skeleton import FPS
 
 STAGED_DIR = DATA_DIR / "staged"
 DEFAULT_SOURCE = DATA_DIR.parents[2] / "shared" / "data"   # ../shared/data, as the main build
@@ -38,18 +42,30 @@ BANDAI = Snapshot(
     path="dataset/Bandai-Namco-Research-Motiondataset-2",
     licence="CC BY-NC 4.0 (dataset/Bandai-Namco-Research-Motiondataset-2/LICENSE)")
 
-SNAPSHOTS = {"bandai-namco-2": BANDAI}
+REACTIDLE = Snapshot(
+    repo="Enekoassets/ReActIdle",
+    commit="90b0ac78b205001edf170f65ff372448ccd0f1c7",
+    path=".",
+    licence="MIT (LICENSE.txt, \"Copyright (c) 2025 [RSAIT]\")")
+
+SNAPSHOTS = {"bandai-namco-2": BANDAI, "reactidle": REACTIDLE}
 SKIPPED: list[tuple[str, list[str]]] = []
+# Files under a staged source's path that its snapshot lacks (it leaves out files of 4 MiB and more).
+ABSENT: dict[str, list[str]] = {}
 
 
-def build_bandai_more(raw: Path, shared: Path) -> list[Clip]:
+def build_bandai_more(raw: Path, shared: Path, limit: int | None = None) -> list[Clip]:
     """Dataset 2's clips from the extracted snapshot folder `raw` (its data/ and cfg/), less
-    those ../shared/data/bandai-namco/dataset-2 holds (the main build's `bandai-namco`)."""
+    those ../shared/data/bandai-namco/dataset-2 holds (the main build's `bandai-namco`); at
+    most `limit` files, taken by a stable hash of the name."""
     from interplay.motion.retarget.bandai_namco import bandai_prompt, load_bandai, read_labels
 
     have = {p.name for p in (shared / "bandai-namco" / "dataset-2" / "data").glob("*.bvh")}
+    paths = sorted((raw / "data").glob("*.bvh"))
+    if limit is not None:
+        paths = sorted(sorted(paths, key=lambda p: _stable_rank(p.name))[:limit])
     clips = []
-    for path in sorted((raw / "data").glob("*.bvh")):
+    for path in paths:
         if path.name in have:
             continue
         rel = f"{BANDAI.path}/data/{path.name}"
@@ -66,14 +82,59 @@ def build_bandai_more(raw: Path, shared: Path) -> list[Clip]:
     return clips
 
 
+def build_reactidle(raw: Path) -> list[Clip]:
+    """ReActIdle's acted and genuine idle captures (the extracted snapshot folder `raw`)."""
+    from interplay.motion.retarget.reactidle import load_reactidle, reactidle_prompt
+
+    clips = []
+    for path in sorted(raw.glob("*/*.bvh")):
+        kind = path.parent.name
+        person = path.stem.split("_")[0]
+        rel = f"{kind}/{path.name}"
+        joints, offsets, meta = load_reactidle(path)
+        meta.update({"file": rel, "repository": REACTIDLE.repo, "commit": REACTIDLE.commit,
+                     "person": person, "kind": kind})
+        if meta["defects"]:
+            SKIPPED.append((f"reactidle/{rel}", meta["defects"]))
+            continue
+        clips.append(Clip(id=f"reactidle:{path.stem}", source="reactidle", people=[joints], offsets=[offsets],
+                          label=f"idle ({kind})", prompt=reactidle_prompt(kind), licence=MIT_REACTIDLE.name,
+                          meta=meta))
+    return clips
+
+
 def assign_staged_splits(clips: list[Clip]) -> None:
-    """By take within each content (as the main build splits Bandai Namco): 15% test, 10% val."""
+    """Bandai Namco by take within each content (as the main build): 15% test, 10% val.
+    ReActIdle by performer (one person's acted and genuine takes share a split)."""
     groups: dict[str, list[str]] = {}
+    people: dict[str, list[str]] = {}
     for c in clips:
-        groups.setdefault(f"{c.source}:{c.meta.get('content', label_family(c.prompt))}", []).append(c.id)
+        if c.source == "reactidle":
+            people.setdefault(c.meta["person"], []).append(c.id)
+        else:
+            groups.setdefault(f"{c.source}:{c.meta.get('content', label_family(c.prompt))}", []).append(c.id)
     split = stratified_split(groups)
+    for person, s in stratified_split({"reactidle": sorted(people)}).items():
+        split.update({cid: s for cid in people[person]})
     for c in clips:
         c.split = split.get(c.id, "train")
+
+
+def _check_lines(clips: list[Clip]) -> list[str]:
+    """Per source: how many clips pass the benchmark's no-pops and grounded checks (the
+    retargeters' own checks, broken roots and foot contact, already left failures out)."""
+    from interplay.motion.bodyframe import body_frame
+    from interplay.motion.checks.named import grounded, no_pops
+
+    out = []
+    for source in SNAPSHOTS:
+        group = [c for c in clips if c.source == source]
+        ok = [all(check(c.people[0], frame)[0] for check in (no_pops, grounded))
+              for c in group for frame in [body_frame(c.people[0], FPS)]]
+        out.append(f"- {source}: {sum(ok)} of {len(group)} clips pass `no_pops` and `grounded` "
+                   "(`interplay.motion.checks.named`); bones are fixed by the fit (IK → FK), the broken-root "
+                   "and foot-contact checks of `interplay.motion.retarget.checks` ran in the retargeter.")
+    return out
 
 
 def write_staged_card(clips: list[Clip], out: Path) -> None:
@@ -92,17 +153,24 @@ def write_staged_card(clips: list[Clip], out: Path) -> None:
               "`/work/.mirror/<owner>+<name>/repo`; the build reads the commit above from it (`git cat-file`)",
               "and stops with a message naming this step when it is absent.", "",
               "## Frame rates", "", *[f"- {n}" for n in _rate_lines(clips, tuple(SNAPSHOTS))], ""]
-    if SKIPPED:
-        lines += ["## Left out", "", *[f"- `{f}`: {'; '.join(r)}" for f, r in SKIPPED], ""]
+    lines += ["## Checks", "", *_check_lines(clips), ""]
+    left = [f"- `{f}`: {'; '.join(r)}" for f, r in SKIPPED]
+    left += [f"- `{name}: {f}`: absent from the snapshot (4 MiB or more)" for name, fs in ABSENT.items() for f in fs]
+    if left:
+        lines += ["## Left out", "", *left, ""]
     lines += _family_lines(clips)
     lines += ["## Split (by take, never by window)", "",
-              "Within each content, takes ordered by a stable hash of the file name: 15% test, 10% val.", "",
+              "bandai-namco-2: within each content, takes ordered by a stable hash of the file name: 15% test,",
+              "10% val. reactidle: by performer (the number in the file name; one performer's acted and genuine",
+              "takes share a split), performers ordered by a stable hash. ReActIdle's prompts fall in",
+              "`label_family`'s \"other\" (it has no idle family).", "",
               "| source | train | val | test |", "|---|---|---|---|"]
     for source in SNAPSHOTS:
         n = {s: sum(1 for c in clips if c.source == source and c.split == s) for s in ("train", "val", "test")}
         lines.append(f"| {source} | {n['train']} | {n['val']} | {n['test']} |")
     lines += ["", "## Licences", "",
-              f"- `bandai-namco-2.npz`: {BANDAI_NAMCO.consequence}. Credit: {BANDAI_NAMCO.credit}", ""]
+              f"- `bandai-namco-2.npz`: {BANDAI_NAMCO.consequence}. Credit: {BANDAI_NAMCO.credit}",
+              f"- `reactidle.npz`: {MIT_REACTIDLE.consequence}. Credit: {MIT_REACTIDLE.credit}", ""]
     (out / "README.md").write_text("\n".join(lines))
 
 
@@ -112,20 +180,23 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--source", type=Path, default=DEFAULT_SOURCE, help="raw data folder (../shared/data)")
     ap.add_argument("--out", type=Path, default=STAGED_DIR, help="output folder (models/data/staged)")
     ap.add_argument("--limit", type=int, default=None, help="at most N clips per source (tests)")
+    ap.add_argument("--only", nargs="*", choices=sorted(SNAPSHOTS), help="build only these staged sources")
     args = ap.parse_args(argv)
     root = args.mirror or mirror_root()
     SKIPPED.clear()
+    ABSENT.clear()
     clips: list[Clip] = []
+    builders = {"bandai-namco-2": lambda raw: build_bandai_more(raw, args.source, args.limit),
+                "reactidle": lambda raw: build_reactidle(raw)[:args.limit]}
     try:
-        with tempfile.TemporaryDirectory() as tmp:
-            t0 = time.time()
-            raw = BANDAI.extract(Path(tmp), root)
-            if args.limit:
-                for p in sorted((raw / "data").glob("*.bvh"), key=lambda p: _stable_rank(p.name))[args.limit:]:
-                    p.unlink()
-            got = build_bandai_more(raw, args.source)
-            print(f"{'bandai-namco-2':14s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
-            clips.extend(got)
+        for name in args.only or list(SNAPSHOTS):
+            with tempfile.TemporaryDirectory() as tmp:
+                t0 = time.time()
+                raw = SNAPSHOTS[name].extract(Path(tmp), root)
+                ABSENT[name] = [f for f in (raw / ".absent").read_text().split() if f.endswith(".bvh")]
+                got = builders[name](raw)
+                print(f"{name:14s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
+                clips.extend(got)
     except SnapshotMissing as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
@@ -137,7 +208,7 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
-__all__ = ["BANDAI", "SNAPSHOTS", "STAGED_DIR", "build_bandai_more", "main"]
+__all__ = ["BANDAI", "REACTIDLE", "SNAPSHOTS", "STAGED_DIR", "build_bandai_more", "build_reactidle", "main"]
 
 
 if __name__ == "__main__":
