@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 # What each top-level package of `interplay` may import (besides itself). Data flows
-# motion → text → planner/trajectory/generators/reaction/review → pipeline → {api, cli, eval, bench}.
+# motion → text → catalogue → planner/trajectory/generators/reaction/review → pipeline → {api, cli, eval, bench}.
 BASE = {"settings"}
 STAGES = {"planner", "trajectory", "generators", "reaction", "review"}
 ALLOWED: dict[str, set[str]] = {
@@ -21,18 +21,19 @@ ALLOWED: dict[str, set[str]] = {
     "settings": set(),
     "motion": BASE,
     "text": BASE,
+    "catalogue": BASE | {"motion", "text"},
     "store": BASE | {"motion"},
     "data": BASE | {"motion"},
-    "planner": BASE | {"motion", "text"},
-    "trajectory": BASE | {"motion", "planner"},
+    "planner": BASE | {"motion", "text", "catalogue"},
+    "trajectory": BASE | {"motion", "planner", "catalogue"},
     "reaction": BASE | {"motion", "text"},
-    "review": BASE | {"motion", "text", "planner"},
-    "generators": BASE | {"motion", "text", "planner"},
-    "pipeline": BASE | {"motion", "text", "store"} | STAGES,
-    "api": BASE | {"interplay", "motion", "text", "store", "pipeline"} | STAGES,
-    "eval": BASE | {"motion", "text", "pipeline", "data"} | STAGES,
+    "review": BASE | {"motion", "text", "planner", "catalogue"},
+    "generators": BASE | {"motion", "text", "planner", "catalogue"},
+    "pipeline": BASE | {"motion", "text", "store", "catalogue"} | STAGES,
+    "api": BASE | {"interplay", "motion", "text", "store", "pipeline", "catalogue"} | STAGES,
+    "eval": BASE | {"motion", "text", "pipeline", "data", "catalogue"} | STAGES,
     "bench": BASE | {"motion", "text", "pipeline", "api"} | STAGES,
-    "cli": BASE | {"motion", "text", "store", "pipeline", "data", "eval", "bench"} | STAGES,
+    "cli": BASE | {"motion", "text", "store", "pipeline", "data", "eval", "bench", "catalogue"} | STAGES,
 }
 # The doors from the CLI into the web layer: `interplay serve` builds the app, `interplay
 # worker` runs the app's job runners from the PostgreSQL queue.

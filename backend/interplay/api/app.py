@@ -19,7 +19,7 @@ from interplay import __version__
 from interplay.api import security, stream
 from interplay.api.queue.factory import retention_of
 from interplay.api.queue.setup import open_jobs
-from interplay.api.routes import edits, jobs, library, motions, pages, rerun
+from interplay.api.routes import actions, edits, jobs, library, motions, pages, rerun
 from interplay.generators.base import Generator
 from interplay.pipeline.requests import readable_errors
 from interplay.settings import Settings, get_settings
@@ -81,6 +81,7 @@ def create_app(settings: Settings | None = None, generator=None) -> FastAPI:
     app.include_router(edits.router)
     app.include_router(rerun.router)
     app.include_router(library.router)
+    app.include_router(actions.router)
     app.include_router(pages.router)  # last: it has a catch-all for top-level files
     security.install(app, settings)   # body limit, security headers, Retry-After on 429
     return app

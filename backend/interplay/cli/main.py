@@ -1,5 +1,5 @@
 """The `interplay` command: serve, worker, generate, plan, edit, react, metrics, export, bench, eval,
-eval-react, review-eval, eval-pair, data build; one module per command group registers its
+eval-react, review-eval, eval-pair, data build, actions; one module per command group registers its
 subcommands here.
 
 Bad files or arguments exit with code 2 and a one-line message on stderr."""
@@ -9,10 +9,10 @@ from __future__ import annotations
 import argparse
 import sys
 
-from interplay.cli import bench, data, eval_pair, evals, files, generate, react, serve, worker
+from interplay.cli import actions, bench, data, eval_pair, evals, files, generate, react, serve, worker
 from interplay.cli.args import CliError
 
-GROUPS = (serve, worker, generate, react, files, bench, evals, eval_pair, data)
+GROUPS = (serve, worker, generate, react, files, bench, evals, eval_pair, data, actions)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -33,6 +33,7 @@ from interplay.generators.base import EditUnavailable, Request, generate_motion,
 from interplay.generators.coda.files import DEFAULT_DIR as CODA_DIR
 from interplay.generators.coda.generator import CodaGenerator
 from interplay.generators.coda.runtime import CodaRuntime
+from interplay.generators.coverage import cover
 from interplay.generators.interaction.generator import NAME as COMPOSE
 from interplay.generators.interaction.generator import InteractionGenerator
 from interplay.generators.plan import GenerationPlan
@@ -79,18 +80,24 @@ class Router:
     def redraw(self, plan: GenerationPlan, index: int, seed: int) -> GenerationPlan:
         """`plan` with retrieval segment `index` drawn again (the reviewer's re-draws)."""
         if plan.generator == "retrieve_edit":
-            return self.retrieve_edit.redraw(plan, index, seed)
-        return self.retrieval.redraw(plan, index, seed)
+            out = self.retrieve_edit.redraw(plan, index, seed)
+        else:
+            out = self.retrieval.redraw(plan, index, seed)
+        cover(out, self.index)
+        return out
 
     def plan(self, req: Request) -> GenerationPlan:
         """The default generator's plan: retrieve-then-edit for one person, composition for
         two (retrieve-then-edit where it composes nothing; see the module's note for the
         measurements that chose them), or retrieval alone when built so."""
         if self.default == "retrieval":
-            return self.retrieval.plan(req)
-        if req.persons == 2:
-            return self.compose.plan(req)
-        return self.retrieve_edit.plan(req)
+            plan = self.retrieval.plan(req)
+        elif req.persons == 2:
+            plan = self.compose.plan(req)
+        else:
+            plan = self.retrieve_edit.plan(req)
+        cover(plan, self.index)
+        return plan
 
     def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:
         kind = plan.generator

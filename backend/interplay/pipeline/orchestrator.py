@@ -22,6 +22,8 @@ from typing import Callable
 
 import numpy as np
 
+from interplay.catalogue.load import catalogue
+from interplay.catalogue.schema import specs
 from interplay.generators.base import Editor, Generator, Request
 from interplay.generators.plan import GenerationPlan, GenerationSegment
 from interplay.generators.retrieval.intent import intent
@@ -202,13 +204,19 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
 def asked_of(seg: GenerationSegment) -> list[dict]:
     """The benchmark's checks (specs for `run_check`) that one person's segment words imply:
     the retrieval's reading of them (`retrieval.intent`, `retrieval.verify.checks`); the first
-    segment starts standing unless it is asked to start elsewhere; a held pose is held."""
+    segment starts standing unless it is asked to start elsewhere; a held pose is held; and
+    the checks the catalogue gives the entry its words were read as (`coverage.entry`)."""
     it = intent(seg.prompt, seg.repeat, seg.travel)
     out = asked_checks(it, it.start, it.end, first=seg.index == 0)
     if it.hold is not None:         # a held pose: held at least 1 s (less of a short segment)
         held = round(min(1.0, 0.4 * (seg.end - seg.start) / 20), 2)
         out.append({"check": "still"} if it.hold == "still" else
                    {"check": "pose_held", "pose": it.hold.split(":")[0], "min_s": held})
+    # the checks the catalogue names for the entry the words were read as (one per check kind)
+    entry = catalogue().get(seg.coverage.entry) if seg.coverage and seg.coverage.entry else None
+    if entry is not None and seg.coverage is not None and seg.coverage.how != "nearest":
+        asked = {spec["check"] for spec in out}
+        out += [spec for spec in specs(entry, it.count, it.side) if spec["check"] not in asked]
     return out
 
 

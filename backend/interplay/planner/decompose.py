@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from interplay.planner.manner.holds import held, keep
-from interplay.planner.verbs import VERBS, Verb, lookup, third
+from interplay.planner.verbs import VERBS, Verb, doing_nouns, lookup, third
 
 ARM_WORDS = {"arm", "hand", "fist", "elbow", "wrist", "finger", "palm", "shoulder", "forearm",
              "thumb"}
@@ -50,6 +50,7 @@ class Action:
     edits: dict[str, str] = field(default_factory=dict)
     posture: str = "standing"
     known: bool = True                # False: no motion verb the planner understands
+    matched: tuple[str, float] | None = None   # (phrase, cosine): taken from the nearest known phrase
 
 
 def _limbs(side: str | None, noun: str, default_side: str | None = None) -> list[str]:
@@ -210,7 +211,7 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
     if hit is not None and hit[1] != "gerund":
         rest = third(hit[0].base) + rest[len(first):]
     if verb is not None and verb.kind == "light":
-        doing = re.match(r"^does a (handstand|push-up|sit-up|jumping jack)", rest)
+        doing = any(rest.startswith(f"does a {noun}") for noun in doing_nouns())
         verb = VERBS["stand"] if doing else None
     if verb is not None and verb.base in ("move", "go"):            # "moves in a circle" → walks
         rest, verb = "walks" + rest[len(rest.split(" ", 1)[0]):], VERBS["walk"]

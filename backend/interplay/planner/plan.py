@@ -29,7 +29,7 @@ from interplay.planner.manner.holds import continues_hold
 from interplay.planner.manner.travel import direction, untangle
 from interplay.planner.pair.actors import actors as who_acts
 from interplay.planner.pair.roles import exchange, exchange_steps
-from interplay.planner.resolve import resolve
+from interplay.planner.resolve import coverage_of, not_understood, resolve
 from interplay.planner.schema import Plan
 from interplay.planner.segments import MAX_SECONDS, Step, timed
 from interplay.planner.trajectory_text import parse as parse_trajectory
@@ -178,9 +178,11 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             text, why = questions.answer(text, None)
             reasons.append(f"similarity unavailable ({type(exc).__name__})")
         reasons.append(why)
-    for step in (strip_context, _onset_poses, lexicon.rewrite):
+    for step in (strip_context, _onset_poses):
         text, notes = step(text)
         reasons.extend(notes)
+    text, notes, named = lexicon.rewrite_named(text)
+    reasons.extend(notes)
     clauses = temporal.split(temporal.normalize(text)) or [temporal.Clause(text.lower())]
     clauses = _fold_holds(clauses, reasons)
     steps: list[Step] = []
@@ -244,13 +246,14 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             last[i] = (f"a person {action.text}", action)
         prev, last_parts = actors, list(action.edits) or last_parts
         steps.append(Step(action, clause.repeat, actors, traj, clause.group, idle, active,
-                          hold=bool(clause.hold)))
+                          hold=bool(clause.hold), coverage=coverage_of(action, named)))
         _travel(steps[-1], reasons)
     if not steps:                                   # nothing recognisable: keep the words
         action = decompose("stands still")
         action.text = plain(_SUBJECT.sub("", split_subject(temporal.normalize(text))[1]))
         action.base = f"a person {action.text}"
-        steps = [Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)))]
+        steps = [Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)),
+                      coverage=not_understood())]
         reasons.append("no motion recognised: one segment with the prompt as written")
     return timed(prompt, persons, seconds, steps, reasons)
 

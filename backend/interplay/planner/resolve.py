@@ -1,5 +1,14 @@
 """A clause the decomposer did not understand: the nearest phrase of the data's vocabulary
-(MiniLM cosine ≥ SIMILARITY), else the words as written, or nothing when it has no motion.
+(MiniLM cosine ≥ SIMILARITY), else the words as written, or nothing when it has no motion; and
+each step's first `coverage`: how well its words were understood (the generator refines it
+with what it made the step from: captures, a primitive, a composition).
+
+    coverage_of(decompose("jumps twice"))        → capture, similarity 1.0, entry "jump"
+    coverage_of(<"juggles three balls", kept as written>) → nearest, similarity 0.0
+
+Words the catalogue names (a verb, a gesture, a noun) are covered by what its entry is made
+from; a clause taken from the nearest known phrase is covered by that phrase's captures at that
+cosine; a clause kept as written is `nearest`: the studio shows the closest captures, and says so.
 
     resolve(decompose("does a flying kick"), …)   → the jump kick (cosine 0.81)
     resolve(decompose("does the griddy"), …)      → "does the griddy", kept as written
@@ -10,11 +19,25 @@ from __future__ import annotations
 
 import re
 
+from interplay.catalogue.load import catalogue
 from interplay.planner.decompose import Action, decompose, split_subject
+from interplay.planner.schema import Coverage
 from interplay.planner.verbs import VERBS, is_verb, lookup, noun_verb
 
 SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest known phrase
 _FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
+
+
+def _unknown_verb(words: list[str]) -> bool:
+    """Does the clause start with a verb the catalogue does not know ("levitates", "juggles")?
+    Such a clause is kept and shown as the nearest captures, never dropped silently; a state
+    ("is tired", "feels happy": the catalogue's `not_motion` words) is dropped."""
+    if not words or words[0] in _FILLER:
+        return False
+    head = words[0]
+    states = set(catalogue().words.lists.get("not_motion", ()))
+    return head not in states and (head.endswith("s") and not head.endswith("ss") or
+                                   head.endswith("ing"))
 
 
 def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reasons):
@@ -41,11 +64,36 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
                         re.sub(r"^(?:two people|a person)\s+", "", target)
                     new.base, new.verb = f"a person {new.text}", VERBS["pose"]
                 new.subject = action.subject
+                new.matched = (match.phrase, match.score)
                 return new
-    if not any(lookup(w) or noun_verb(w) for w in words):
+    if not any(lookup(w) or noun_verb(w) for w in words) and not _unknown_verb(words):
         reasons.append(f"dropped '{clause}': no motion in it")
         return None
     action.text = re.sub(r"^(?:two people|a person|the person|they|both)\s+", "", action.text)
     reasons.append(f"unknown motion '{action.text}': kept as written")
     action.base, action.verb = f"a person {action.text}", VERBS["pose"]
     return action
+
+
+def coverage_of(action: Action, named: list[tuple[str, str]] | None = None) -> Coverage:
+    """`named`: (motion words, entry) of the gestures the lexicon rewrote (`lexicon.rewrite_named`):
+    a step made of such words is covered by that entry."""
+    if action.matched is not None:
+        phrase, score = action.matched
+        return Coverage(how="capture", similarity=round(max(-1.0, min(1.0, score)), 4),
+                        shown=phrase[:300])
+    if not action.known:
+        return Coverage(how="nearest", similarity=0.0, shown="")
+    cat = catalogue()
+    gesture = next((name for out, name in named or ()
+                    if any(step.split(" while ")[0] in action.text for step in out.split(", then "))), None)
+    name = gesture or (action.verb.base if action.verb is not None else None)
+    entry = cat.get(name) if name else None
+    how = entry.made_by.how if entry is not None else "capture"
+    return Coverage(how=how, similarity=1.0, shown=action.text[:300],  # type: ignore[arg-type]
+                    entry=entry.name if entry is not None else None)
+
+
+def not_understood() -> Coverage:
+    """A prompt with no motion the planner recognises: shown as the nearest captures."""
+    return Coverage(how="nearest", similarity=0.0, shown="")

@@ -225,7 +225,7 @@ class Coverage(BaseModel):
     model_config = ConfigDict(extra="forbid")
     how: CoverageHow
     similarity: float = Field(ge=-1.0, le=1.0)
-    confidence: float = Field(ge=0.0, le=1.0)
+    confidence: float | None = Field(default=None, ge=0.0, le=1.0)   # set once the judge has scored it
     shown: str = Field(default="", max_length=300)
     entry: str | None = None          # the catalogue entry it was matched to
 

@@ -16,7 +16,7 @@ from typing import Any
 from interplay.motion.skeleton import FPS
 from interplay.planner.decompose import Action
 from interplay.planner.durations import Need, fit, fits, need
-from interplay.planner.schema import Plan, TrajectorySpec, Travel
+from interplay.planner.schema import Coverage, Plan, TrajectorySpec, Travel
 from interplay.planner.verbs import lookup
 
 MAX_SECONDS = 60.0
@@ -36,6 +36,7 @@ class Step:
     hold: bool = False               # keeps its pose (or posture) to the end
     timing: dict | None = None       # schema.RoleTiming as a dict (exchanges)
     prompt: str | None = None        # the segment prompt an exchange gave it
+    coverage: Coverage | None = None  # how well the words were understood (planner/coverage.py)
 
 
 def prompt_of(step: Step, persons: int) -> str:
@@ -104,7 +105,8 @@ def timed(prompt: str, persons: int, seconds: float | None, steps: list[Step], r
             "edits": s.action.edits, "trajectory": s.trajectory, "seconds": n / FPS,
             "start": start, "end": start + n, "persons": s.active,
             "roles": _roles(s) if persons == 2 else None, "repeat": s.repeat,
-            "travel": s.travel, "timing": s.timing if persons == 2 else None})
+            "travel": s.travel, "timing": s.timing if persons == 2 else None,
+            "coverage": s.coverage})
         start += n
     rewritten = ", then ".join(seg["prompt"] for seg in segments)
     # Validated from plain data: `persons` and the segments are checked by the Plan schema.

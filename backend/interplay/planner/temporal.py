@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from interplay.planner.verbs import DOING_NOUNS, gerund, lookup, noun_verb, third
+from interplay.planner.verbs import doing_nouns, gerund, lookup, noun_verb, third
 
 NUMBERS = {"once": 1, "one": 1, "twice": 2, "two": 2, "thrice": 3, "three": 3, "four": 4,
            "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10}
@@ -135,8 +135,9 @@ def _noun_to_verb(text: str) -> tuple[str, int]:
             continue                        # a bare noun only counts alone ("a full turn")
         count = int(det) if (det or "").isdigit() else NUMBERS.get(det or "", 1)
         head, rest = text[:m.start()], text[m.end():]
-        key = noun[:-1] if noun.endswith("s") and noun[:-1] in DOING_NOUNS else noun
-        if key in DOING_NOUNS:
+        doing = doing_nouns()
+        key = noun[:-1] if noun.endswith("s") and noun[:-1] in doing else noun
+        if key in doing:
             return f"{head}does a {key}{rest}", count
         verb = noun_verb(noun)
         if verb is None:

@@ -1,4 +1,5 @@
-"""The motion verbs the planner knows: what moves (whole body, travel, one part), how long one
+"""The motion verbs the planner knows (the catalogue's entries of kinds travel, whole, part and
+light, `catalogue/actions.toml`): what moves (whole body, travel, one part), how long one
 performance takes, which posture it ends in, and their word forms.
 
     lookup("walked")  → (VERBS["walk"], "past")
@@ -12,8 +13,11 @@ start, keep …; the motion is in its object or the verb after it).
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
+
+from interplay.catalogue.load import catalogue, on_change
 
 
 @dataclass(frozen=True)
@@ -26,127 +30,41 @@ class Verb:
     speed: float | None = None   # travel: metres per second
 
 
-def _v(base, kind, seconds=2.0, part=None, posture=None, speed=None):
-    return Verb(base, kind, seconds, part, posture, speed)
+class _Table(Mapping[str, Verb]):
+    """{base: Verb} of the catalogue's motion verbs (kinds travel / whole / part / light), read
+    through to the catalogue in use so that a test's catalogue is seen everywhere."""
+
+    def _verbs(self) -> dict[str, Verb]:
+        return _verbs()
+
+    def __getitem__(self, key: str) -> Verb:
+        return self._verbs()[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._verbs())
+
+    def __len__(self) -> int:
+        return len(self._verbs())
 
 
-# Durations are typical HumanML3D-style performances; travel speeds are ordinary gaits.
-VERBS: dict[str, Verb] = {v.base: v for v in [
-    _v("walk", "travel", 4.0, posture="standing", speed=1.3),
-    _v("stroll", "travel", 4.0, posture="standing", speed=1.0),
-    _v("march", "travel", 4.0, posture="standing", speed=1.3),
-    _v("step", "travel", 1.5, posture="standing", speed=1.0),
-    _v("sneak", "travel", 4.0, posture="standing", speed=0.8),
-    _v("tiptoe", "travel", 4.0, posture="standing", speed=0.7),
-    _v("run", "travel", 3.0, posture="standing", speed=3.0),
-    _v("jog", "travel", 3.5, posture="standing", speed=2.2),
-    _v("sprint", "travel", 3.0, posture="standing", speed=5.0),
-    _v("hop", "travel", 2.5, posture="standing", speed=1.0),
-    _v("skip", "travel", 3.0, posture="standing", speed=1.5),
-    _v("crawl", "travel", 4.0, posture="crawling", speed=0.5),
-    _v("move", "travel", 3.0, posture="standing", speed=1.3),
-    _v("go", "travel", 3.0, posture="standing", speed=1.3),
-    _v("slide", "whole", 2.0, posture="kneeling"),
-    _v("moonwalk", "travel", 4.0, posture="standing", speed=0.6),
-    _v("shuffle", "travel", 3.0, posture="standing", speed=0.8),
-    _v("limp", "travel", 4.0, posture="standing", speed=0.8),
-    _v("jump", "whole", 2.0, posture="standing"),
-    _v("leap", "whole", 2.0, posture="standing"),
-    _v("spin", "whole", 1.5, posture="standing"),
-    _v("twirl", "whole", 1.5, posture="standing"),
-    _v("pirouette", "whole", 1.5, posture="standing"),
-    _v("turn", "whole", 1.5),
-    _v("rotate", "whole", 1.5),
-    _v("sit", "whole", 2.0, posture="sitting"),
-    _v("stand", "whole", 2.0, posture="standing"),
-    _v("rise", "whole", 2.0, posture="standing"),
-    _v("squat", "whole", 2.0, posture="standing"),
-    _v("crouch", "whole", 2.0, posture="squatting"),
-    _v("kneel", "whole", 2.0, posture="kneeling"),
-    _v("lie", "whole", 3.0, posture="lying"),
-    _v("fall", "whole", 1.5, posture="lying"),
-    _v("topple", "whole", 1.5, posture="lying"),
-    _v("collapse", "whole", 1.5, posture="lying"),
-    _v("trip", "whole", 1.5, posture="lying"),
-    _v("stumble", "whole", 1.5, posture="standing"),
-    _v("stagger", "whole", 1.5, posture="standing"),
-    _v("stop", "whole", 2.5, posture="standing"),      # slows down, then is seen standing
-    _v("follow", "travel", 4.0, posture="standing", speed=1.3),
-    _v("chase", "travel", 3.0, posture="standing", speed=3.0),
-    _v("lead", "travel", 4.0, posture="standing", speed=1.0),
-    _v("dive", "whole", 1.5, posture="lying"),
-    _v("roll", "whole", 2.0, posture="lying"),
-    _v("cartwheel", "whole", 2.0, posture="standing"),
-    _v("somersault", "whole", 2.0, posture="standing"),
-    _v("flip", "whole", 2.0, posture="standing"),
-    _v("bow", "whole", 2.0, posture="standing"),
-    _v("curtsy", "whole", 2.0, posture="standing"),
-    _v("bend", "whole", 2.0),
-    _v("lean", "whole", 2.0),
-    _v("dance", "whole", 4.0, posture="standing"),
-    _v("stretch", "part", 2.0, "arms"),
-    _v("hug", "whole", 2.5), _v("embrace", "whole", 2.5),
-    _v("lunge", "whole", 2.0, posture="standing"),
-    _v("land", "whole", 1.5),
-    _v("dodge", "whole", 1.5, posture="standing"),
-    _v("duck", "whole", 1.5, posture="standing"),
-    _v("wait", "whole", 2.0), _v("stay", "whole", 2.0), _v("pose", "whole", 2.0),
-    _v("look", "whole", 1.5), _v("nod", "whole", 1.0), _v("balance", "whole", 2.5),
-    _v("kick", "part", 1.2, "leg"), _v("stomp", "part", 1.0, "leg"),
-    _v("tap", "part", 1.0, "leg"), _v("lift", "part", 1.5, "arm"),
-    _v("raise", "part", 1.5, "arm"), _v("lower", "part", 1.2, "arm"),
-    _v("wave", "part", 2.0, "arm"), _v("point", "part", 1.5, "arm"),
-    _v("reach", "part", 1.5, "arm"), _v("grab", "part", 1.5, "arm"),
-    _v("punch", "part", 1.0, "arm"), _v("throw", "part", 1.5, "arm"),
-    _v("swing", "part", 2.0, "arm"), _v("extend", "part", 1.5, "arm"),
-    _v("clap", "part", 1.0, "arms"), _v("cross", "part", 1.5, "arms"),
-    _v("cover", "part", 1.5, "arms"), _v("shrug", "part", 1.0, "arms"),
-    _v("flex", "part", 2.0, "arms"), _v("salute", "part", 1.5, "arm"),
-    _v("pump", "part", 1.0, "arm"), _v("shake", "part", 2.0, "arm"),
-    _v("hold", "part", 2.0, "arm"), _v("keep", "light", 2.0),
-    _v("rest", "part", 2.0, "arm"), _v("put", "part", 1.5, "arm"),
-    _v("place", "part", 1.5, "arm"), _v("press", "part", 1.5, "arms"),
-    _v("push", "part", 1.5, "arms"), _v("shove", "part", 1.5, "arms"),
-    _v("hit", "part", 1.0, "arm"), _v("tackle", "whole", 1.5, posture="standing"), _v("pull", "part", 1.5, "arms"),
-    _v("catch", "part", 1.5, "arms"), _v("shoot", "part", 1.5, "arm"),
-    _v("dribble", "part", 2.0, "arm"), _v("chop", "part", 1.0, "arm"),
-    _v("circle", "part", 2.0, "arm"), _v("rub", "part", 2.0, "arms"),
-    _v("tuck", "part", 1.5, "arm"), _v("thrust", "part", 1.0, "arm"),
-    _v("smash", "part", 1.2, "arms"), _v("open", "part", 1.5, "arms"),
-    _v("touch", "part", 1.5, "arm"), _v("bring", "part", 1.5, "arm"),
-    _v("drop", "whole", 1.5), _v("sway", "whole", 2.0), _v("glide", "travel", 3.0, speed=0.8),
-    _v("spread", "part", 1.5, "legs"), _v("slap", "part", 1.0, "arm"), _v("clench", "part", 1.0, "arm"),
-    _v("pat", "part", 1.5, "arm"), _v("scratch", "part", 1.5, "arm"), _v("stir", "part", 2.0, "arm"),
-    _v("do", "light"), _v("perform", "light"), _v("make", "light"), _v("strike", "light"),
-    _v("imitate", "light"), _v("execute", "light"), _v("start", "light"),
-    _v("begin", "light"), _v("continue", "light"), _v("try", "light"), _v("attempt", "light"),
-    _v("get", "light"), _v("switch", "light"), _v("transition", "light"), _v("pretend", "light"),
-    _v("take", "light"), _v("give", "light"), _v("finish", "light"),
-]}
+@lru_cache(maxsize=1)
+def _verbs() -> dict[str, Verb]:
+    return {a.name: Verb(a.name, a.kind, a.seconds, a.part, a.ends_in, a.speed)
+            for a in catalogue().action if a.kind in _KINDS and not a.noun_only}
 
-_IRREGULAR = {  # base: (third, gerund, past, participle)
-    "run": ("runs", "running", "ran", "run"), "sit": ("sits", "sitting", "sat", "sat"),
-    "stand": ("stands", "standing", "stood", "stood"), "get": ("gets", "getting", "got", "got"),
-    "swing": ("swings", "swinging", "swung", "swung"), "throw": ("throws", "throwing", "threw", "thrown"),
-    "fall": ("falls", "falling", "fell", "fallen"), "lie": ("lies", "lying", "lay", "lain"),
-    "spin": ("spins", "spinning", "spun", "spun"), "rise": ("rises", "rising", "rose", "risen"),
-    "do": ("does", "doing", "did", "done"), "make": ("makes", "making", "made", "made"),
-    "strike": ("strikes", "striking", "struck", "struck"), "begin": ("begins", "beginning", "began", "begun"),
-    "go": ("goes", "going", "went", "gone"), "keep": ("keeps", "keeping", "kept", "kept"),
-    "take": ("takes", "taking", "took", "taken"), "give": ("gives", "giving", "gave", "given"),
-    "shake": ("shakes", "shaking", "shook", "shaken"), "hold": ("holds", "holding", "held", "held"),
-    "put": ("puts", "putting", "put", "put"), "catch": ("catches", "catching", "caught", "caught"),
-    "shoot": ("shoots", "shooting", "shot", "shot"), "slide": ("slides", "sliding", "slid", "slid"),
-    "dive": ("dives", "diving", "dove", "dived"), "leap": ("leaps", "leaping", "leapt", "leapt"),
-    "bend": ("bends", "bending", "bent", "bent"), "kneel": ("kneels", "kneeling", "knelt", "knelt"),
-    "bring": ("brings", "bringing", "brought", "brought"), "try": ("tries", "trying", "tried", "tried"),
-    "spread": ("spreads", "spreading", "spread", "spread"),
-    "curtsy": ("curtsies", "curtsying", "curtsied", "curtsied"),
-    "lean": ("leans", "leaning", "leaned", "leaned"),
-    "lead": ("leads", "leading", "led", "led"), "hit": ("hits", "hitting", "hit", "hit"),
-}
-_DOUBLE = {"hop", "skip", "step", "jog", "tap", "trip", "flip", "grab", "chop", "drop", "stop",
-           "nod", "clap", "shrug", "hug", "pat", "stir", "slap", "squat", "rub", "stab", "bob"}
+
+@lru_cache(maxsize=1)
+def _irregular() -> dict[str, tuple[str, ...]]:
+    return {a.name: tuple(a.forms) for a in catalogue().action if a.forms}
+
+
+@lru_cache(maxsize=1)
+def _doubles() -> frozenset[str]:
+    return frozenset(a.name for a in catalogue().action if a.doubles)
+
+
+_KINDS = ("travel", "whole", "part", "light")
+VERBS: Mapping[str, Verb] = _Table()
 
 
 def _regular(base: str) -> tuple[str, str, str, str]:
@@ -156,7 +74,7 @@ def _regular(base: str) -> tuple[str, str, str, str]:
         third = base[:-1] + "ies"
     else:
         third = base + "s"
-    if base in _DOUBLE:
+    if base in _doubles():
         stem = base + base[-1]
     elif base.endswith("e") and not base.endswith(("ee", "ye", "oe")):
         stem = base[:-1]
@@ -174,7 +92,7 @@ def _regular(base: str) -> tuple[str, str, str, str]:
 
 def forms(base: str) -> dict[str, str]:
     """{"base", "third", "gerund", "past", "participle"} of a verb."""
-    third, gerund, past, part = _IRREGULAR.get(base) or _regular(base)
+    third, gerund, past, part = _irregular().get(base) or _regular(base)
     return {"base": base, "third": third, "gerund": gerund, "past": past, "participle": part}
 
 
@@ -205,27 +123,34 @@ def is_verb(word: str, kinds: tuple[str, ...] = ("travel", "whole", "part")) -> 
     return hit is not None and hit[0].kind in kinds
 
 
-# Nouns that name a motion ("a squat", "two kicks", "hand claps") → the verb they stand for.
-NOUNS = {"squat": "squat", "kick": "kick", "punch": "punch", "jump": "jump", "spin": "spin",
-         "turn": "turn", "clap": "clap", "tap": "tap", "bow": "bow", "curtsy": "curtsy",
-         "lunge": "lunge", "leap": "leap", "hop": "hop", "step": "step", "wave": "wave",
-         "somersault": "somersault", "cartwheel": "cartwheel", "flip": "flip", "roll": "roll",
-         "run": "run", "walk": "walk", "sprint": "sprint", "dive": "dive", "stretch": "stretch",
-         "dance": "dance", "salute": "salute", "shrug": "shrug", "stomp": "stomp", "twirl": "twirl",
-         "pirouette": "pirouette", "swing": "swing", "throw": "throw", "chop": "chop", "fall": "fall",
-         "handstand": "handstand", "crawl": "crawl", "nod": "nod", "hug": "hug"}
-# Nouns done with "does a …" rather than turned into a verb ("does a handstand").
-DOING_NOUNS = {"handstand": ("whole", 3.0, "standing"), "push-up": ("whole", 3.0, "lying"),
-               "sit-up": ("whole", 3.0, "lying"), "jumping jack": ("whole", 1.0, "standing")}
+@lru_cache(maxsize=1)
+def nouns() -> dict[str, str]:
+    """Nouns that name a motion ("a squat", "two kicks", "hand claps") → the verb they stand for."""
+    return {n: a.name for a in catalogue().action for n in a.nouns}
+
+
+@lru_cache(maxsize=1)
+def doing_nouns() -> dict[str, tuple[str, float, str | None]]:
+    """Nouns done with "does a …" rather than turned into a verb ("does a handstand"):
+    {noun: (kind, seconds, posture after)}."""
+    return {a.name: (a.kind, a.seconds, a.ends_in) for a in catalogue().action if a.noun_only}
+
+
+def _clear() -> None:
+    for f in (_verbs, _irregular, _doubles, _table, nouns, doing_nouns):
+        f.cache_clear()
+
+
+on_change(_clear)
 
 
 def noun_verb(word: str) -> str | None:
     """The verb a motion noun stands for: "squats" → "squat", "claps" → "clap"."""
-    w = word.lower().strip(".,;:!?\"'")
-    if w in NOUNS:
-        return NOUNS[w]
-    if w.endswith("es") and w[:-2] in NOUNS:
-        return NOUNS[w[:-2]]
-    if w.endswith("s") and w[:-1] in NOUNS:
-        return NOUNS[w[:-1]]
+    w, table = word.lower().strip(".,;:!?\"'"), nouns()
+    if w in table:
+        return table[w]
+    if w.endswith("es") and w[:-2] in table:
+        return table[w[:-2]]
+    if w.endswith("s") and w[:-1] in table:
+        return table[w[:-1]]
     return None

@@ -1,0 +1,4 @@
+"""The catalogue of actions: the studio's vocabulary as one data file (`actions.toml`) that every
+stage reads. `load.catalogue()` gives the validated entries; `grammar` is the one module with
+regular expressions (numbers, counts, sides, sentence structure, and the patterns it compiles
+from the catalogue's words); `match` finds entries for a text through the MiniLM encoder."""

@@ -1,0 +1,156 @@
+"""The one module with regular expressions: numbers, counts, sides, sentence structure, and the
+patterns compiled from the catalogue's own words (an action's word forms, a gesture's names).
+No phrase table lives here: what an action is called comes from `actions.toml`.
+
+    words_rx(["sprint*", "as fast as"]).search("she dashes as fast as she can")
+    names_source(["t pose"])        → matches "t pose", "t-pose", "tpose", "T-pose's"
+    count_in("kicks three times")   → 3
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+_NONWORD = re.compile(r"[^a-z0-9'é]+")
+
+
+@lru_cache(maxsize=4096)
+def rx(source: str, flags: int = 0) -> re.Pattern:
+    """A compiled pattern, once per source (every dynamic pattern goes through here)."""
+    return re.compile(source, flags)
+
+
+def _word(w: str) -> str:
+    """One word form: "sprint*" → any ending; "'s" may follow (a possessive name)."""
+    if w.endswith("*"):
+        return re.escape(w[:-1]) + r"\w*"
+    return re.escape(w)
+
+
+def words_source(words, not_before=()) -> str:
+    """Any of the word forms (multi-word forms with any spaces), as whole words, not followed
+    by a word of `not_before`."""
+    alts = sorted({r"[\s-]+".join(_word(p) for p in w.split()) for w in words}, key=len, reverse=True)
+    src = r"\b(?:" + "|".join(alts) + r")\b" if alts else r"(?!x)x"
+    if not_before:
+        src += r"(?!\s+(?:" + "|".join(_word(w) for w in not_before) + r")\b)"
+    return src
+
+
+def words_rx(words, not_before=()) -> re.Pattern:
+    return rx(words_source(tuple(words), tuple(not_before)), re.IGNORECASE)
+
+
+def names_source(names, followed_by=()) -> str:
+    """Set phrases of a gesture or pose, longest first: words joined by a space, a hyphen, a
+    comma or nothing ("t pose" is also "t-pose" and "tpose"), each may take a possessive 's."""
+    def one(name: str) -> str:
+        return r"(?:\s*[,-]?\s*)".join(_word(w) + r"(?:'s)?" for w in name.split())
+    alts = sorted({one(n) for n in names}, key=len, reverse=True)
+    src = "(?:" + "|".join(alts) + ")"
+    if followed_by:
+        ends = [r"\s*[,.;]" if w == "." else r"\s+" + _word(w) + r"\b" for w in followed_by]
+        src += r"(?=" + "|".join(ends + [r"\s*$"]) + ")"
+    return src
+
+
+# --- numbers and counts ---
+NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+           "eight": 8, "nine": 9, "ten": 10}
+_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+ONCE = re.compile(r"\bonce\b|\bone\s+time\b|\ba\s+single\b")
+
+
+def number(word: str) -> int | None:
+    w = word.lower()
+    return int(w) if w.isdigit() else {"twice": 2, "thrice": 3, **NUMBERS}.get(w)
+
+
+def times_rx(nouns) -> re.Pattern:
+    """"twice", "three times", "3 jumps", "four quick hops": a number and what it counts
+    (`nouns`: the counted actions' plural forms)."""
+    plural = "|".join(sorted({re.escape(n) for n in nouns}, key=len, reverse=True)) or "(?!x)x"
+    return rx(rf"\b(twice|thrice)\b|\b({_NUMBER})\s+(?:times\b|(?:\w+\s+)?(?:{plural})\b)")
+
+
+def one_rx(nouns) -> re.Pattern:
+    """"a jump", "one quick squat", "a single kick": one of a counted action."""
+    singular = "|".join(sorted({re.escape(n) for n in nouns}, key=len, reverse=True)) or "(?!x)x"
+    return rx(r"\b(?:a|an|one|single)\s+(?:(?!(?:few|couple|bit|little|lot|series|number|in|"
+              r"on|at|with|your|his|her|their|the|of|to|for|and)\b)[a-z-]+\s+){0,2}?"
+              rf"(?:{singular})\b")
+
+
+# --- sides and limbs ---
+LIMB = r"(?:leg|foot|feet|knee|arm|hand|fist|elbow|shoulder)s?"
+SIDE = re.compile(rf"\b(left|right)(?:[\s-]+(?:hand(?:ed)?|footed))?\s+{LIMB}\b|"
+                  rf"\b(left|right)[\s-]+(?:handed|footed)\b")
+LEFT_RIGHT = re.compile(r"\b(left|right)\b")
+
+
+def words_of(text: str) -> list[str]:
+    """Lower-case words of a text (letters, digits, apostrophes)."""
+    return [w for w in _NONWORD.split(text.lower()) if w]
+
+
+# --- named gestures and poses: "<intro> <det> <adjectives> NAME <tail>" ---
+_DET = (r"(?:(?P<det>the|a|an|his|her|their|one|two|three|four|five|six|seven|eight|nine|ten|"
+        r"\d+)\s+)?")
+
+
+def named_rx(names, followed_by, intro, sequential, adjectives, tails) -> re.Pattern:
+    """A gesture's names as a prompt says them: "does the classic T-pose", "striking a dab
+    move", "switching into a T-pose", "Rocky's victory pose" (groups: intro, det, name)."""
+    lead = "|".join(sorted({r"\s+".join(_word(p) for p in w.split()) for w in intro}, key=len, reverse=True))
+    seq = "|".join(sorted({_word(w) for w in sequential}, key=len, reverse=True))
+    adj = "|".join(sorted({re.escape(a) for a in adjectives}, key=len, reverse=True))
+    tail = "|".join(sorted({re.escape(t) for t in tails}, key=len, reverse=True))
+    src = (rf"\b(?:(?P<intro>{lead}|(?:{seq})\s+(?:in)?to)\s+)?{_DET}"
+           rf"(?:(?:{adj}|[\w.-]+(?:\s+[\w.-]+)?(?:'s|’s))\s+)*"
+           rf"(?P<name>{names_source(names, followed_by)})(?:\s+(?:{tail}))?\b")
+    return rx(src, re.IGNORECASE)
+
+
+CLAUSE_BREAK = re.compile(r"[,.;]|\bthen\b")
+
+
+# --- directions, turns, postures: sentence structure around the catalogue's words ---
+BACK_NOT = r"(?!\s+(?:up|to|home|and|into|in)\b)"      # "runs back to …", "steps back up" go somewhere
+
+
+def back_rx(travel_forms) -> re.Pattern:
+    """"<travel verb> back" ("steps back", "walks back") not followed by where to."""
+    verbs = "|".join(sorted({re.escape(w) for w in travel_forms}, key=len, reverse=True))
+    return rx(rf"\b(?:{verbs})\s+back\b{BACK_NOT}")
+
+
+STEP_TO_SIDE = re.compile(r"\bsteps?\s+(?:to|towards)\s+(?:the|his|her|their)\s+(?:left|right)\b")
+AROUND = re.compile(r"\bturn\w*\s+(?:all\s+the\s+way\s+)?a?round\b|\babout[- ]face\b|\bturn\w*\s+back\b")
+TURN_SIDE = re.compile(r"\bturn\w*\s+(?:to\s+(?:the|his|her|their)\s+)?(left|right)\b")
+STOPS = re.compile(r"\bstands?\s+still\b|\bstops?\b(?!\s+\w+ing\s+(?:the|a|his|her)\b)|"
+                   r"\bhalts?\b|\bcomes?\s+to\s+a\s+(?:stop|halt)\b")
+GOES_ON = re.compile(r"\bthen\b|\bstarts?\b|\bagain\b")
+FROM = re.compile(r"\bfrom\s+(?:a\s+|the\s+|his\s+|her\s+|their\s+)?(lying|lying\s+down|"
+                  r"sitting|seated|sitting\s+down|kneeling|the\s+floor|the\s+ground|floor|ground)")
+RISES = re.compile(r"\b(?:gets?|getting|got)\s+(?:back\s+)?up\b|\bstands?\s+(?:back\s+)?up\b|"
+                   r"\bstanding\s+(?:back\s+)?up\b|\brises?\b|\brising\b")
+SITS_UP = re.compile(r"\bsits?\s+up\b|\bsitting\s+up\b")
+ENDS = [(re.compile(r"\bsits?\s+up\b|\bsitting\s+up\b"), "sitting"),
+        (re.compile(r"\b(?:sits?|sitting|sat)\b(?!\s+up)|\btakes?\s+a\s+seat\b"), "sitting"),
+        (re.compile(r"\b(?:lies|lie|lying|lays?|laying)\s+(?:down|on)\b|\blies\b"), "lying"),
+        (re.compile(r"\bkneel\w*\b|\bon\s+(?:one|both|his|her|their)\s+knees?\b"), "kneeling")]
+# Held poses: on one leg (a stance or a lifted leg held), a squat held.
+ONE_LEG = re.compile(r"\b(?:stand\w*|balanc\w*|stay\w*|remain\w*)\b[^.]*?\bon (?:one|a single|the (?:left|right)"
+                     r"|(?:your|his|her|their) (?:left|right)) (?:leg|foot)\b"
+                     r"|\b(?:lift|rais)\w* (?:one|a|the (?:left|right)|(?:your|his|her|their) (?:left|right)) "
+                     r"(?:leg|foot)\b[^.]*\b(?:balanc|hold)\w*")
+STANCE = re.compile(r"\bon (?:the |your |his |her |their )?(left|right) (?:leg|foot)\b")
+LIFTED = re.compile(r"\b(?:lift|rais)\w* (?:the |your |his |her |their )?(left|right)")
+HELD_AROUND = r"\b(?:hold\w*|stay\w*|remain\w*|keep\w*)\b[^.]*"       # "… holds it", "stays in …"
+
+
+def held_rx(words) -> re.Pattern:
+    """A pose named by `words` held: "holds a squat", "squats and stays down", "in a deep squat"."""
+    w = words_source(tuple(words))
+    return rx(rf"{HELD_AROUND}{w}|{w}[^.]*\b(?:hold\w*|stay\w*|remain\w*)\b|\bin a (?:deep |low |full )?{w}")
