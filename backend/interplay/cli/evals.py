@@ -7,6 +7,7 @@ import json
 import sys
 
 from interplay.cli.args import CliError
+from interplay.eval.prompts.suite import SPLITS as SUITE_SPLITS
 from interplay.eval.rows import ROW_NAMES
 
 
@@ -70,8 +71,37 @@ def cmd_eval_react(args) -> int:
     return 0
 
 
+def _review_honesty(args, generator) -> int:
+    """The reviewer's verdicts against the benchmark's checks on the prompt suite's split."""
+    import numpy as np
+
+    from interplay.eval.prompts.suite import load_suite, select
+    from interplay.eval.review import format_honesty, run_honesty
+    from interplay.pipeline.orchestrator import default_evaluator, orchestrate
+    if args.seeds < 1:
+        raise CliError("--seeds must be at least 1")
+    try:
+        prompts = select(load_suite(), args.split,
+                         ids=[i.strip() for i in args.ids.split(",")] if args.ids else None)
+    except ValueError as exc:
+        raise CliError(str(exc)) from None
+    if not prompts:
+        raise CliError(f"no prompts in split {args.split!r}")
+    evaluator = default_evaluator()
+
+    def make(req):
+        out = orchestrate(generator, req, lambda e: None, lambda s, c: None, evaluator=evaluator)
+        return [np.asarray(p, np.float64) for p in out.people], out.review
+    report = run_honesty(make, prompts[:args.limit], seeds=args.seeds,
+                         log=lambda m: print(m, file=sys.stderr))
+    report["split"] = args.split
+    print(json.dumps(report, indent=1) if args.json else format_honesty(report))
+    return 0
+
+
 def cmd_review_eval(args) -> int:
-    """The reviewer before/after its correction rounds on CoMA's 40 Table 8 prompts."""
+    """The reviewer before/after its correction rounds on CoMA's 40 Table 8 prompts, or
+    (`--honesty`) its verdicts against the benchmark's checks on a prompt split."""
     from interplay.eval.review import format_table, run, table8_prompts
     from interplay.generators.router import load_generator
     from interplay.settings import get_settings
@@ -79,10 +109,22 @@ def cmd_review_eval(args) -> int:
         raise CliError("--limit must be at least 1")
     settings = get_settings()
     generator = load_generator(settings)
+    if args.honesty:
+        return _review_honesty(args, generator)
     prompts = table8_prompts()[:args.limit]
     report = run(generator, prompts, seconds=args.seconds, rounds=args.rounds,
                  log=lambda m: print(m, file=sys.stderr))
     print(json.dumps(report, indent=1) if args.json else format_table(report))
+    return 0
+
+
+def cmd_review_calibrate(args) -> int:
+    from interplay.eval.calibrate import calibrate, format_table
+    try:
+        out = calibrate(write=not args.dry_run, log=lambda m: print(m, file=sys.stderr))
+    except (ValueError, FileNotFoundError) as exc:
+        raise CliError(str(exc)) from None
+    print(json.dumps(out, indent=1) if args.json else format_table(out))
     return 0
 
 
@@ -94,15 +136,15 @@ def cmd_eval_prompts(args) -> int:
     from interplay.eval.prompts.report import build_report, format_table, run, write
     from interplay.eval.prompts.rows import ROW_NAMES as PROMPT_ROWS
     from interplay.eval.prompts.rows import load_rows
-    from interplay.eval.prompts.suite import load_suite, select
+    from interplay.eval.prompts.suite import load_split
     from interplay.motion.clip import DATA_DIR, default_clips
     from interplay.settings import get_settings
     names = [r.strip() for r in args.rows.split(",") if r.strip()] if args.rows else list(PROMPT_ROWS)
     if args.seeds < 1:
         raise CliError("--seeds must be at least 1")
     try:
-        prompts = select(load_suite(), args.split,
-                         ids=[i.strip() for i in args.ids.split(",")] if args.ids else None)
+        prompts = load_split(args.split,
+                             ids=[i.strip() for i in args.ids.split(",")] if args.ids else None)
         if not prompts:
             raise ValueError(f"no prompts in split {args.split!r}" + (f" with ids {args.ids}" if args.ids else ""))
         rows, skipped = load_rows(names, get_settings())
@@ -155,13 +197,27 @@ def register(sub) -> None:
     p.add_argument("--limit", type=int, help="only the first N prompts")
     p.add_argument("--seconds", type=float, default=8.0, help="length per prompt (default 8)")
     p.add_argument("--rounds", type=int, default=2, help="K review rounds (default 2)")
+    p.add_argument("--honesty", action="store_true", help="instead: the studio's verdicts on "
+                   "the prompt suite's split against its checks (outputs failing half or more "
+                   "that end ok, outputs passing all that end failed)")
+    p.add_argument("--split", choices=SUITE_SPLITS, default="test", help="--honesty's split")
+    p.add_argument("--seeds", type=int, default=1, help="--honesty's seeds per prompt (default 1)")
+    p.add_argument("--ids", help="--honesty: comma-separated prompt ids")
     p.set_defaults(func=cmd_review_eval)
+
+    p = sub.add_parser("review-calibrate", help="the reviewer's thresholds: the evaluators' "
+                       "scores on the test split's captures with their own and other families' "
+                       "captions, ROC and a logistic confidence → calibration.json beside the weights")
+    p.add_argument("--json", action="store_true", help="the whole calibration as JSON")
+    p.add_argument("--dry-run", action="store_true", help="measure only, write nothing")
+    p.set_defaults(func=cmd_review_calibrate)
 
     p = sub.add_parser("eval-prompts", help="pass rates of every generator on a suite of prompts "
                        "as users type them, checked on the motion itself (per category, 95%% CI "
                        "over seeds)")
-    p.add_argument("--split", choices=("dev", "test"), default="test",
-                   help="dev: tune there; test: the benchmark (default)")
+    p.add_argument("--split", choices=("dev", "test", "fresh"), default="test",
+                   help="dev: tune there; test: the benchmark (default); fresh: prompts in "
+                   "words the code has no table for, part edits among them")
     p.add_argument("--rows", help="comma-separated: retrieval,spam,coda,default (default all; "
                    "rows whose weights are missing are skipped)")
     p.add_argument("--seeds", type=int, default=3, help="seeds per prompt (default 3)")

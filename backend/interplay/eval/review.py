@@ -99,3 +99,76 @@ def format_table(report: dict) -> str:
     lines.append(f"instructions (first review): {t['instructions']}; corrections applied "
                  f"{t['corrections_applied']}, accepted {t['corrections_accepted']}")
     return "\n".join(lines)
+
+
+# -- honesty: does the verdict agree with the benchmark's checks? ----------------------------
+VERDICT_ORDER = ("ok", "correct", "not_covered", "failed")     # worst last
+
+
+def output_verdict(review: dict) -> str:
+    """One output's verdict: the worst of its segments' last reviews (for two people the last
+    segment's last one is the interaction's last round: `correct` there means it still misses
+    what they do together, counted as failed). A one-person `correct` is polish left undone."""
+    segs = [s for s in review.get("segments", []) if s["reviews"]]
+    last = [s["reviews"][-1]["verdict"] for s in segs]
+    if segs and segs[-1]["reviews"][-1].get("score_kind") == "interaction_checks" \
+            and last[-1] == "correct":
+        last[-1] = "failed"
+    return max(last, key=VERDICT_ORDER.index, default="ok")
+
+
+def why_failed(review: dict) -> list[str]:
+    """The failed checks and the instructions left of an output's segments that end failed."""
+    out = []
+    for s in review.get("segments", []):
+        last = s["reviews"][-1] if s["reviews"] else None
+        if last is not None and last["verdict"] in ("failed", "correct"):
+            out += [*last["checks"]["failed"], *(i["kind"] for i in last["instructions"])]
+    return sorted(set(out))
+
+
+def run_honesty(make, prompts, seeds: int = 1, log=lambda m: None) -> dict:
+    """Every prompt × seed through `make(req) -> (people, review)`, judged by its checks
+    (`eval.prompts.report.judge`) and compared with the reviewer's verdict."""
+    from interplay.eval.prompts.report import judge
+    from interplay.generators.base import Request
+    rows, t0 = [], time.monotonic()
+    for p in prompts:
+        for seed in range(seeds):
+            people, rv = make(Request(p.prompt, persons=p.persons, seconds=p.seconds, seed=seed))
+            j = judge(p, people)
+            failed = j["total"] - j["passed"]
+            rows.append({"id": p.id, "split": p.split, "persons": p.persons, "seed": seed,
+                         "prompt": p.prompt, "passed": j["passed"], "total": j["total"],
+                         "verdict": output_verdict(rv),
+                         "bad": j["total"] > 0 and failed >= j["total"] / 2,
+                         "good": j["all_passed"], "why": why_failed(rv)})
+            r = rows[-1]
+            log(f"{p.id:>8} s{seed} {r['passed']}/{r['total']} {r['verdict']:>11}  {p.prompt[:50]}")
+    return {"outputs": len(rows), "seeds": seeds, "elapsed_s": round(time.monotonic() - t0, 1),
+            "table": honesty_table(rows), "rows": rows}
+
+
+def honesty_table(rows: list[dict]) -> dict:
+    out = {}
+    for name, sel in (("one person", lambda r: r["persons"] == 1),
+                      ("two people", lambda r: r["persons"] == 2), ("all", lambda r: True)):
+        rs = [r for r in rows if sel(r)]
+        bad, good = [r for r in rs if r["bad"]], [r for r in rs if r["good"]]
+        out[name] = {"outputs": len(rs), "bad": len(bad), "bad_ok": sum(r["verdict"] == "ok" for r in bad),
+                     "good": len(good), "good_failed": sum(r["verdict"] == "failed" for r in good),
+                     "verdicts": {v: sum(r["verdict"] == v for r in rs) for v in VERDICT_ORDER}}
+    return out
+
+
+def format_honesty(report: dict) -> str:
+    pct = lambda a, n: f"{a}/{n} = {a / n:.0%}" if n else "—"          # noqa: E731
+    lines = [f"{report['outputs']} outputs ({report['seeds']} seed(s)), {report['elapsed_s']:.0f} s",
+             f"{'':12}{'outputs':>8}  {'failing ≥ half of checks → ok':>30}  "
+             f"{'passing all checks → failed':>28}  verdicts ok/correct/not_covered/failed"]
+    for name, t in report["table"].items():
+        v = t["verdicts"]
+        lines.append(f"{name:12}{t['outputs']:>8}  {pct(t['bad_ok'], t['bad']):>30}  "
+                     f"{pct(t['good_failed'], t['good']):>28}  "
+                     f"{v['ok']}/{v['correct']}/{v['not_covered']}/{v['failed']}")
+    return "\n".join(lines)

@@ -6,6 +6,8 @@ Files (written by `python -m models.evaluator.export` into models/weights/evalua
   text_proj.npz        MLP over the frozen MiniLM embedding: fc1_w (384, H), fc1_b, fc2_w (H, 256), fc2_b
   normalizer.npz       feature mean/std of the training split (interplay.motion.features.Normalizer)
   config.json          max_frames, patch, embed_dim, …
+  calibration.json     the reviewer's threshold and P(match | score) (`review.calibration`),
+                       read at load into `.calibration`
 
     ev = EvaluatorRuntime.load()
     m = ev.embed_motion([joints])           # (1, 256) unit rows
@@ -27,6 +29,7 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 
 from interplay.motion.features import FEATURE_DIM, Normalizer, encode
+from interplay.review.calibration import Calibration, load_calibration
 from interplay.settings import REPO_ROOT
 
 DEFAULT_DIR = REPO_ROOT / "models" / "weights" / "evaluator"
@@ -95,12 +98,17 @@ class EvaluatorRuntime:
         self.patch = int(config["patch"])
         self.dim = int(config["embed_dim"])
         self._text_encoder = text_encoder
+        # The threshold and P(match | score) measured on held-out captures for these weights
+        # (`review.calibration`; None: not calibrated, the reviewer then has no threshold).
+        self.calibration: Calibration | None = None
 
     @classmethod
     def load(cls, directory: str | Path = DEFAULT_DIR, threads: int = 1) -> "EvaluatorRuntime":
         d = Path(directory)
         session, proj, config = open_weights(d, "evaluator", "models.evaluator", threads)
-        return cls(session, proj, Normalizer.load(d / "normalizer.npz"), config)
+        out = cls(session, proj, Normalizer.load(d / "normalizer.npz"), config)
+        out.calibration = load_calibration(d)
+        return out
 
     # -- motion ------------------------------------------------------------------------------
     def embed_features(self, features: list[np.ndarray]) -> np.ndarray:

@@ -31,6 +31,7 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.kinematics import floor_height
 from interplay.motion.pair.windows import canonical_window, distance_map, relative_root
+from interplay.review.calibration import load_calibration
 from interplay.review.evaluator import EvaluatorRuntime, _unit, chunks, open_weights
 from interplay.settings import REPO_ROOT
 
@@ -80,7 +81,9 @@ class PairEvaluator(EvaluatorRuntime):
         session, proj, config = open_weights(d, "pair evaluator", "models.pair_evaluator", threads)
         with np.load(d / "normalizer.npz") as z:
             norm = {"mean": z["mean"], "std": z["std"]}
-        return cls(session, proj, norm, config)
+        out = cls(session, proj, norm, config)
+        out.calibration = load_calibration(d)
+        return out
 
     def embed_pair_features(self, features: np.ndarray) -> np.ndarray:
         """Unit embeddings (N, E) of raw pair features (N, T, 293), T ≤ max_frames, all real
