@@ -39,6 +39,7 @@ declare global {
       playing: boolean;
       agentReviews: number;
       library: string[];
+      shownPath: { person: number; points: [number, number][]; followed: boolean };
       frameJoints(person: number, frame: number): number[][] | null;
       project(person: number, joint: number): [number, number] | null;
       groundAt(x: number, y: number): [number, number] | null;

@@ -5,10 +5,12 @@ import { ApiError, cancelJob, createJob, getHistory, getJob, getMotion, getSkele
 import { intentKey, recalledRequest, rememberRequest, resumeFromSearch, resumeUrl } from "./api/intent";
 import { refreshLibrary, showLibrary, watchLibrary } from "./library";
 import { openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
+import { retryStream } from "./api/retry";
 import { agentFromReview } from "./api/agent";
 import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
 import { reactRequest } from "./directing/react";
 import { fromHistory, moveTo, pushVersion } from "./directing/versions";
+import { followedOf, useFollowed } from "./directing/followed";
 import { FPS, frames, playhead, useStudio, type StudioState } from "./store";
 import { copyCheck, resetCopyCheck, verifyCopy } from "./playback/verify";
 
@@ -98,6 +100,10 @@ let sentPath: unknown = null;
  * Generate only), unless a new one was drawn meanwhile. A failed or cancelled one keeps it. */
 function usePathUp(): void {
   const s = useStudio.getState();
+  // it stays on the floor as the path this motion followed (directing/followed.ts)
+  if (sentPath !== null && s.motionId) {
+    useFollowed.setState({ path: { motionId: s.motionId, person: Math.min(s.path.person, s.motionPersons - 1), points: sentPath as [number, number][] } });
+  }
   if (sentPath !== null && s.path.points === sentPath) s.setPath({ points: [], preset: null });
   sentPath = null;
 }
@@ -200,7 +206,23 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
     frame: 0,
     playing: true,
   });
-  stream = openStream(job.stream, handleEvent);
+  stream = openStream(job.stream, handleEvent, () => void reconnect(job.job_id));
+}
+
+/** The stream of job `jobId` dropped before it ended: keep the job's URL, wait (longer each
+ * time, api/retry.ts) until the server answers for the job again, then follow it again from its
+ * first event (`resumeJob`: a job the restarted server runs again, a done motion, or one gone). */
+async function reconnect(jobId: string): Promise<void> {
+  stream = null;
+  const show = (reconnecting: { attempt: number; nextInS: number } | null) =>
+    useStudio.setState((s) => ({ stream: { ...s.stream, reconnecting } }));
+  await retryStream({
+    current: () => useStudio.getState().stream.jobId === jobId && stream === null,
+    show,
+    reachable: () => getJob(jobId).then(() => true, (err) => err instanceof ApiError && err.status === 404),
+    resume: () => resumeJob(jobId, resumeFromSearch(window.location.search)?.motion ?? null),
+    giveUp: () => handleEvent({ type: "error", message: "the server did not come back; reload the page to try again" }),
+  });
 }
 
 /** After a reload with `?job=…`: follow that job again (its stream replays every event from
@@ -211,7 +233,14 @@ export async function resumeJob(jobId: string, motionId: string | null): Promise
   try {
     status = await getJob(jobId);
   } catch (err) {
-    if (!(err instanceof ApiError) || err.status !== 404) {
+    if (!(err instanceof ApiError) || err.status >= 500) {
+      // the server is away (restarting): keep the job's URL and try again
+      useStudio.setState({ stream: startStream(null, jobId) });
+      stream = null;
+      void reconnect(jobId);
+      return;
+    }
+    if (err.status !== 404) {
       fail(err);
       return;
     }
@@ -267,7 +296,7 @@ export async function resumeJob(jobId: string, motionId: string | null): Promise
       useStudio.setState((s) => ({ stream: { ...s.stream, mode: "react", actorId: actor } }));
     }
     handleEvent(ev);
-  });
+  }, () => void reconnect(status.job_id));
 }
 
 /** Add a reactor (Person 2, generated frame by frame) to the current one-person motion, with an
@@ -289,7 +318,7 @@ export async function react(intent: string): Promise<void> {
   pendingPersons = 2;
   window.history.pushState(null, "", resumeUrl(job.job_id, job.motion_id));
   useStudio.setState({ stream: startStream(null, job.job_id, "react", motionId) });
-  stream = openStream(job.stream, handleEvent);
+  stream = openStream(job.stream, handleEvent, () => void reconnect(job.job_id));
 }
 
 /** Cancel the running job. */
@@ -306,6 +335,7 @@ export async function cancel(): Promise<void> {
 /** Show a stored motion (already fetched) in the scene. */
 export function showMotion(motion: Motion): void {
   frames.loadMotion(motion);
+  useFollowed.setState({ path: followedOf(motion) }); // the path it followed stays on the floor
   playhead.pos = 0;
   const n = frames.received;
   useStudio.setState({

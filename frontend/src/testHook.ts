@@ -1,6 +1,7 @@
 // `window.__interplay`: a tiny read-only view of the studio for the end-to-end tests.
 import { FPS, frames, renderStats, sceneProbe, useStudio } from "./store";
 import { useLibrary } from "./library";
+import { shownPath, useFollowed } from "./directing/followed";
 import { figureStats, useFigure } from "./figure";
 import { viewStats } from "./scene/views";
 import { MARK_STRIDE } from "./scene/overlaps";
@@ -38,6 +39,8 @@ export interface InterplayTestHook {
   readonly range: [number, number] | null;
   readonly playing: boolean;
   readonly agentReviews: number;
+  /** The path drawn on the floor now: the pending one, or the one the motion followed (`followed`). */
+  readonly shownPath: { person: number; points: [number, number][]; followed: boolean };
   /** The motion ids listed in My motions, newest first. */
   readonly library: string[];
   /** Joints ([x, y, z] × 22) of person p at frame t of the buffer, or null. */
@@ -136,6 +139,11 @@ export function installTestHook(target: Window = window): void {
     },
     get agentReviews() {
       return Object.values(useStudio.getState().stream.agent).reduce((n, s) => n + s.reviews.length, 0);
+    },
+    get shownPath() {
+      const s = useStudio.getState();
+      const f = useFollowed.getState();
+      return shownPath(s.path, f.path, f.show, s.motionId, s.versions.ids);
     },
     get library() {
       return useLibrary.getState().items.map((m) => m.id);

@@ -7,6 +7,7 @@ import { useEffect, useRef } from "react";
 import { advance, blendAt } from "../playback/timeline";
 import { FPS, frames, playhead, renderStats, useStudio } from "../store";
 import { jointsOfPart } from "../directing/parts";
+import { shownPath, useFollowed } from "../directing/followed";
 import { Vector3 } from "three";
 import { pointer, sceneProbe } from "../store";
 import { Picker } from "./Picker";
@@ -53,7 +54,7 @@ export function Viewport() {
     };
     const picker = new Picker(canvas, stage.camera);
     sceneProbe.ground = (cx, cy) => picker.ground(cx, cy);
-    let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1 };
+    let overlay = { pointer: -1, path: null as unknown, tool: "", selected: null as unknown, gen: -1, followed: null as unknown, motion: null as string | null, versions: null as unknown };
     let look = { theme: "", top: false };
     let generation = -1; // which FrameBuffer contents the mannequins were built for
     let framed = -1; // the buffer's version the view was last fitted to
@@ -105,18 +106,22 @@ export function Viewport() {
       const top = s.topView && s.tool === "path";
       if (look.top !== top) stage.setTopView(top);
       look = { theme: s.theme, top };
+      const followed = useFollowed.getState();
       if (overlay.pointer !== pointer.version || overlay.path !== s.path || overlay.tool !== s.tool ||
-        overlay.selected !== s.selected || overlay.gen !== generation) {
-        const points = pointer.drawing ?? s.path.points;
+        overlay.selected !== s.selected || overlay.gen !== generation || overlay.followed !== followed ||
+        overlay.motion !== s.motionId || overlay.versions !== s.versions) {
+        // the path drawn or waiting for the next Generate, else the one the motion followed
+        const shown = shownPath(s.path, followed.path, followed.show, s.motionId, s.versions.ids);
+        const points = pointer.drawing ?? shown.points;
         // handles on presets and short drawn paths (a long stroke would be a string of beads)
-        const editable = s.tool === "path" && !pointer.drawing && (s.path.preset !== null || points.length <= 12);
-        stage.path.update(points, s.path.person, editable);
+        const editable = s.tool === "path" && !pointer.drawing && !shown.followed && (s.path.preset !== null || points.length <= 12);
+        stage.path.update(points, pointer.drawing ? s.path.person : shown.person, editable);
         if (skeleton) {
           const sets = (sel: { person: number; part: Parameters<typeof jointsOfPart>[1] } | null) =>
             [0, 1].map((p) => new Set(sel && sel.person === p ? jointsOfPart(skeleton.joints, sel.part) : []));
           stage.setSelection(sets(s.selected), sets(s.tool === "part" ? pointer.hover : null));
         }
-        overlay = { pointer: pointer.version, path: s.path, tool: s.tool, selected: s.selected, gen: generation };
+        overlay = { pointer: pointer.version, path: s.path, tool: s.tool, selected: s.selected, gen: generation, followed, motion: s.motionId, versions: s.versions };
         drawn = { pos: -1, version: -1 };
         stage.markDirty();
       }

@@ -1,6 +1,7 @@
 import { useEffect, useRef } from "react";
 import { pathLength } from "../directing/path";
 import { pointer, useStudio, type Tool } from "../store";
+import { shownPath, useFollowed } from "../directing/followed";
 import { FigureToggle } from "./FigureToggle";
 
 const TOOLS: { tool: Tool; label: string; hint: string }[] = [
@@ -33,6 +34,26 @@ function PathLength() {
     pointer.version++; // redraw the label for a path set by a preset or cleared
   }, [points]);
   return <span ref={el} className="tools__length small" data-testid="path-length-live" aria-live="off" />;
+}
+
+/** Show / hide the path the motion on stage followed (kept on the floor after generating). */
+function FollowedToggle() {
+  const followed = useFollowed((f) => f.path);
+  const show = useFollowed((f) => f.show);
+  const setShow = useFollowed((f) => f.setShow);
+  const relevant = useStudio((s) => shownPath({ person: 0, points: [] }, followed, true, s.motionId, s.versions.ids).followed);
+  if (!relevant) return null;
+  return (
+    <button
+      data-testid="path-visible"
+      aria-pressed={show}
+      className={show ? "active" : ""}
+      title={show ? "Hide the path this motion followed" : "Show the path this motion followed"}
+      onClick={() => setShow(!show)}
+    >
+      ↝ Path
+    </button>
+  );
 }
 
 /** The viewport's modes: draw a path on the floor (with a top view and the path's length as it
@@ -70,6 +91,7 @@ export function Tools() {
           <PathLength />
         </>
       )}
+      <FollowedToggle />
       {tool !== "view" && <span className="tools__hint small">{TOOLS.find((t) => t.tool === tool)?.hint}</span>}
       <FigureToggle />
     </div>
