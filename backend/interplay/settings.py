@@ -59,6 +59,7 @@ class Settings(BaseSettings):
     job_queue: Literal["auto", "embedded", "procrastinate"] = "auto"
     drain_s: float = Field(default=5.0, ge=0, le=600)
     job_stale_s: float = Field(default=30.0, gt=0)
+    job_max_attempts: int = Field(default=3, ge=1, le=20)  # a job whose process died runs again
     generator_factory: str | None = None
     # Retention (off by default): keep at most this many motions / motions this young.
     retention_max_motions: int | None = Field(default=None, ge=1)

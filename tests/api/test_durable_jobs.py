@@ -1,9 +1,10 @@
 """Durable jobs, against real `interplay serve` processes on SQLite (the embedded default):
 
-- a server killed with `kill -9` mid-job, then started again: the running job is `failed` with
-  the reason (not 404 forever), its stream replays what was streamed and ends with an error
-  event saying why, its motion id answers 409 with the reason; the job that was queued behind
-  it runs after the restart;
+- a server killed with `kill -9` mid-job, then started again: the running job runs again from
+  its start (a `restart` event in its stream) and its motion is stored; with no attempts left
+  (INTERPLAY_JOB_MAX_ATTEMPTS) it is `failed` with the reason (not 404 forever), its stream
+  replays what was streamed and ends with an error event saying why, its motion id answers 409
+  with the reason; the job that was queued behind it runs after the restart;
 - SIGTERM: a job that finishes within INTERPLAY_DRAIN_S is done, a longer one ends with an
   error event ("the server is shutting down") and close code 1000, not a bare 1012;
 - edits go through the job queue: at most `job_workers` heavy edits run at once, and beyond
@@ -41,8 +42,50 @@ def _read_until(ws, kind: str) -> list[dict]:
     return events
 
 
-def test_a_restart_fails_the_running_job_with_a_reason_and_runs_the_queued_one(tmp_path):
-    env = base_env(tmp_path, INTERPLAY_TEST_CHUNK_DELAY_S="0.25")
+def test_a_restart_runs_the_running_job_again_from_its_start_and_it_is_stored(tmp_path):
+    """Issue 26.2: the job a killed server was running is queued again when a server starts
+    (attempt 2): its stored stream is what the dead attempt streamed, a `restart` event, then
+    the new attempt from its plan to `done`; the motion is stored, the same as the same
+    request (seed included) made in one go."""
+    env = base_env(tmp_path, INTERPLAY_TEST_CHUNK_DELAY_S="0.2")
+    server, base = start_server(tmp_path, env, name="first")
+    try:
+        running = _post(base, seconds=6, seed=1)
+        with connect(base.replace("http", "ws") + running["stream"], max_size=None) as ws:
+            before = _read_until(ws, "frames")
+        time.sleep(0.3)                                 # the writer batches every 50 ms
+        server.signal(signal.SIGKILL)
+        server.popen.wait(10)
+    finally:
+        server.stop()
+    server, base = start_server(tmp_path, env, name="second")
+    try:
+        status = wait_status(base, running["job_id"], ("done", "failed"))
+        assert status["status"] == "done" and status["attempts"] == 2 and status["reason"] is None
+        again = httpx.get(f"{base}/api/motions/{running['motion_id']}").json()
+        fresh = _post(base, seconds=6, seed=1)
+        wait_status(base, fresh["job_id"], ("done",))
+        want = httpx.get(f"{base}/api/motions/{fresh['motion_id']}").json()
+        assert again["people"] == want["people"]
+    finally:
+        server.stop()
+    # Once the process that ran it is gone too, the stream comes from the database: the dead
+    # attempt's events, the restart, the new attempt.
+    server, base = start_server(tmp_path, env, name="third")
+    try:
+        events, code = follow(base, running["stream"])
+        kinds = [e["type"] for e in events]
+        assert code == 1000 and events[:len(before)] == before and kinds.count("restart") == 1
+        restart = events[kinds.index("restart")]
+        assert restart["attempt"] == 2 and "stopped before it finished" in restart["reason"]
+        assert kinds[kinds.index("restart") + 1] == "plan" and kinds[-1] == "done"
+        assert "done" not in kinds[:kinds.index("restart")]
+    finally:
+        server.stop()
+
+
+def test_a_job_out_of_attempts_fails_with_a_reason_and_the_queued_one_runs(tmp_path):
+    env = base_env(tmp_path, INTERPLAY_TEST_CHUNK_DELAY_S="0.25", INTERPLAY_JOB_MAX_ATTEMPTS="1")
     server, base = start_server(tmp_path, env, name="first")
     try:
         running = _post(base, seconds=8, seed=1)        # 16 chunks × 0.25 s

@@ -17,9 +17,10 @@ One `JobManager` per process, in one of three roles:
                    procrastinate; `interplay worker` processes run them
     worker         (`interplay worker`) runs the jobs procrastinate hands it
 Every role refreshes the heartbeat of the jobs it holds, passes on cancels asked for through
-other processes, and ends orphans: a running job whose worker died is failed with the reason
-and an error event (its frames were already streamed, so it is not re-run); a queued embedded
-job whose process died is taken over and run here.
+other processes, and handles orphans: a running job whose worker died is queued again with a
+`restart` event and run from its start (`queue.requeue`; after `max_attempts` starts it is
+failed with the reason and an error event); a queued embedded job whose process died is taken
+over and run here.
 """
 
 from __future__ import annotations
@@ -41,6 +42,7 @@ from interplay.api.events import ErrorEvent
 from interplay.api.queue.execute import SHUTDOWN, run_job
 from interplay.api.queue.follow import Notifier, StoredJob, ended_event
 from interplay.api.queue.live import LiveJob
+from interplay.api.queue.requeue import requeue_or_fail
 from interplay.api.queue.writer import EventWriter
 from interplay.motion.skeleton import FPS
 from interplay.store import JobRecord, JobStore, MotionRepository, new_id
@@ -128,12 +130,14 @@ class JobManager:
     def __init__(self, store: JobStore, repo: MotionRepository, *, role: str = "embedded",
                  workers: int = 1, max_pending: int = 16, retention_s: float = 900.0,
                  generator=None, defer=None, notifier: Notifier | None = None,
-                 stale_s: float = 30.0, poll_s: float | None = None, tick_s: float = TICK_S):
+                 stale_s: float = 30.0, poll_s: float | None = None, tick_s: float = TICK_S,
+                 max_attempts: int = 3):
         assert role in ("embedded", "procrastinate", "worker")
         self.store, self.repo, self.role = store, repo, role
         self.workers, self.max_pending, self.retention_s = workers, max_pending, retention_s
         self.generator, self.defer = generator, defer
         self.stale_s, self.tick_s = stale_s, tick_s
+        self.max_attempts = max_attempts        # starts of a job whose process keeps dying
         self.poll_s = poll_s if poll_s is not None else (1.0 if store.postgres else 0.2)
         self.name = process_name()
         self.notifier = notifier or Notifier(store, None)
@@ -409,14 +413,14 @@ class JobManager:
                                          seq=rec.events)
                     self._schedule(job, self.generator)
                 continue
-            who = rec.worker or rec.owner
-            reason = (f"the process running the job ({who}) stopped before it finished "
-                      "(killed, crashed or restarted)")
-            event = ErrorEvent(stage="worker", message=f"generation failed: {reason}").dump()
-            if self.store.end_with_event(rec, from_states=("running",), state="failed",
-                                         reason=reason, event=event):
-                log.warning("job %s failed: %s", rec.id, reason)
-                self.notifier.wake(rec.id)
+            requeue_or_fail(self, rec)
+
+    def run_again(self, rec: JobRecord) -> None:
+        """The embedded queue: run a job queued again here (`queue.requeue`); its events go on
+        after the `restart` event."""
+        job = self._add_live(rec.id, rec.motion_id, JobSpec.from_plain(rec.spec),
+                             seq=rec.events + 1)
+        self._schedule(job, self.generator)
 
     def _prune_memory(self) -> None:
         """Forget finished jobs older than the retention time, and all but the newest

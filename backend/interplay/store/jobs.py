@@ -7,8 +7,8 @@ on any process, or after a restart, replays the job from its first event.
 
 Process names are `host:pid:token` (`process_name()`): a job whose worker's process is gone
 (same host, pid not alive, or this very pid with another token: the process was restarted) or
-whose heartbeat is older than the stale time is an orphan, found by `orphans()` and ended with
-`fail_orphan()`. On PostgreSQL every write that adds events or ends a job sends
+whose heartbeat is older than the stale time is an orphan, found by `orphans()`: queued again
+(`requeue()`, with a `restart` event) or, after its last attempt, ended (`end_with_event()`). On PostgreSQL every write that adds events or ends a job sends
 `NOTIFY interplay_jobs, '<job id>'` in its transaction, so listeners wake as soon as it commits.
 """
 
@@ -307,6 +307,27 @@ class JobStore:
                 n = conn.execute(update(JobRow).where(*cond).values(
                     state=state, reason=reason, result=result, finished_at=now,
                     events=rec.events + 1)).rowcount
+                if n != 1:
+                    return False
+                conn.execute(insert(JobEventRow).values(
+                    job_id=rec.id, seq=rec.events,
+                    body=json.dumps(event, separators=(",", ":"))))
+                self._notify(conn, [rec.id])
+        except IntegrityError:
+            return False
+        return True
+
+    def requeue(self, rec: JobRecord, *, owner: str, event: dict) -> bool:
+        """A running job whose process died, queued again (if it is still running with the
+        `events` count it had) for `owner` to take, its stream's next event `event` (a
+        `restart`). False when something else changed it first."""
+        now = _now()
+        cond = [JobRow.id == rec.id, JobRow.state == "running", JobRow.events == rec.events]
+        try:
+            with self.engine.begin() as conn:
+                n = conn.execute(update(JobRow).where(*cond).values(
+                    state="queued", worker=None, owner=owner, heartbeat_at=now,
+                    started_at=None, events=rec.events + 1)).rowcount
                 if n != 1:
                     return False
                 conn.execute(insert(JobEventRow).values(

@@ -31,6 +31,10 @@ export function describeProgress(s: StreamState, hasPath = false): ProgressView 
       return { stage: "react", label: `Person 2 reacting · ${s.received} / ${s.total} frames`, fraction: clamp(s.received / s.total), busy: false };
     return { stage: "react-start", label: "Starting the reactor…", fraction: 0, busy: true };
   }
+  if (s.reconnecting) {
+    const { attempt, nextInS } = s.reconnecting;
+    return { stage: "reconnecting", label: `The server is not answering — trying again${nextInS > 0 ? ` in ${nextInS} s` : "…"} (try ${attempt})`, fraction: 0, busy: true };
+  }
   const segments = plan?.segments ?? [];
   if (!plan || !segments.length) {
     return { stage: "planning", label: "Planning the motion…", fraction: 0, busy: true };

@@ -27,6 +27,11 @@ export interface StreamState {
   actorId?: string | null;
   /** The job was sent with a drawn path (its progress then names the path stage). */
   path?: boolean;
+  /** The stream dropped before the job ended (the server went away): the page is trying to
+   * reach it again, `attempt` tries so far, the next in `nextInS` seconds. */
+  reconnecting?: { attempt: number; nextInS: number } | null;
+  /** The job's attempt after a `restart` (its process died and it runs again), else absent. */
+  attempt?: number;
 }
 
 export const initialStream: StreamState = {
@@ -74,7 +79,7 @@ export function reduceStream(state: StreamState, event: StreamEvent): StreamStat
       return state;
     case "restart":
       // the job runs again from its start: its stream follows with a new plan, new frames
-      return { ...startStream(state.motionId, state.jobId, state.mode, state.actorId), phase: "generating", path: state.path };
+      return { ...startStream(state.motionId, state.jobId, state.mode, state.actorId), phase: "generating", path: state.path, attempt: event.attempt };
     case "metrics":
       return { ...state, metrics: event.metrics };
     case "done":
@@ -134,9 +139,9 @@ export interface StreamHandle {
   close(): void;
 }
 
-/** Open the job's stream; every event (and a synthetic error if the socket drops before
- * `done`) goes to onEvent. */
-export function openStream(path: string, onEvent: (ev: StreamEvent) => void): StreamHandle {
+/** Open the job's stream; every event goes to onEvent. If the socket drops before `done` or
+ * `error`: `onLost()` when given (the caller reconnects), else a synthetic error event. */
+export function openStream(path: string, onEvent: (ev: StreamEvent) => void, onLost?: () => void): StreamHandle {
   const ws = new WebSocket(streamSocketUrl(path));
   let finished = false;
   const emit = (ev: StreamEvent) => {
@@ -145,8 +150,15 @@ export function openStream(path: string, onEvent: (ev: StreamEvent) => void): St
     onEvent(ev);
   };
   ws.onmessage = (msg) => emit(parseEvent(String(msg.data)));
-  ws.onerror = () => emit({ type: "error", message: "the generation stream failed" });
-  ws.onclose = () => emit({ type: "error", message: "the stream closed before the motion was done" });
+  const lost = (message: string) => {
+    if (finished) return;
+    if (onLost) {
+      finished = true;
+      onLost();
+    } else emit({ type: "error", message });
+  };
+  ws.onerror = () => lost("the generation stream failed");
+  ws.onclose = (e) => (e.code === 4404 ? emit({ type: "error", message: e.reason || "the job is not on the server" }) : lost("the stream closed before the motion was done"));
   return {
     close() {
       finished = true;

@@ -80,7 +80,8 @@ def run_worker(settings: Settings, concurrency: int, generator=None) -> int:
         generator = build_generator(settings)
     manager = JobManager(store, repo, role="worker", workers=concurrency,
                          retention_s=settings.job_retention_s, generator=generator,
-                         notifier=Notifier(store, None), stale_s=settings.job_stale_s)
+                         notifier=Notifier(store, None), stale_s=settings.job_stale_s,
+                         max_attempts=settings.job_max_attempts)
     manager.start()
     app = make_app(settings.db_url, max_size=concurrency + 3)
 

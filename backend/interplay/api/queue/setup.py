@@ -40,7 +40,8 @@ def start_jobs(settings: Settings, repo: MotionRepository, generator):
     manager = JobManager(store, repo, role=role, workers=settings.job_workers,
                          max_pending=settings.max_pending_jobs,
                          retention_s=settings.job_retention_s, generator=generator, defer=defer,
-                         notifier=Notifier(store, dsn), stale_s=settings.job_stale_s)
+                         notifier=Notifier(store, dsn), stale_s=settings.job_stale_s,
+                         max_attempts=settings.job_max_attempts)
     manager.start()
     return manager
 
