@@ -112,7 +112,12 @@ test("two people shake hands: seen from the side of their line, both in view and
   await expectBothInView(page, "front view");
   const side = await choose(page, "Side view", "side", true);
   const ds = direction(side);
-  expect(Math.abs(ds[0] * line[0] + ds[2] * line[1]) / Math.hypot(ds[0], ds[2])).toBeGreaterThan(0.95); // along the line
+  // from Person 2's end of the line, turned off it until both are apart (issue 26: exactly
+  // along it, one stood behind the other)
+  const alongSide = (ds[0] * line[0] + ds[2] * line[1]) / Math.hypot(ds[0], ds[2]);
+  expect(alongSide).toBeGreaterThan(0.4);
+  expect(alongSide).toBeLessThan(0.87);
+  await expectBothInView(page, "side view");
   const top = await choose(page, "Top-down view", "top");
   expect(direction(top)[1]).toBeGreaterThan(0.99);
   await shot(page, "cam-top-handshake", info);

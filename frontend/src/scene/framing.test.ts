@@ -1,7 +1,7 @@
 import * as THREE from "three";
 import { describe, expect, it } from "vitest";
 import { rest, skeleton } from "../test/fixtures";
-import { FIT_MARGIN, facing, fitView, groupFrame, viewDirection, type Vec3 } from "./framing";
+import { FIT_MARGIN, SIDE_CLEAR, facing, fitView, groupFrame, pairSideTurn, viewDirection, type Vec3 } from "./framing";
 import { NUM_SPHERES, placeSpheres, sphereLayout } from "./sphereBody";
 
 const LH = skeleton.joints.indexOf("left_hip");
@@ -115,12 +115,57 @@ describe("framing the people", () => {
     const side = viewDirection("side", g);
     const top = viewDirection("top", g);
     expect(Math.abs(front[0])).toBeLessThan(1e-6); // the pair's line is X: the front is ±Z
-    expect(Math.abs(side[0])).toBeGreaterThan(0.98); // along the line, from Person 2's end
-    expect(side[0]).toBeGreaterThan(0);
+    // from Person 2's end (+X), turned off the line towards the front: both apart (below)
+    expect(side[0]).toBeGreaterThan(0.4);
+    expect(Math.abs(side[0])).toBeLessThan(0.9);
     expect(top[1]).toBeGreaterThan(0.999);
     // both face -Z (side by side, say): the front view looks at their faces
     const both = [pose(Math.PI, -0.4, 0), pose(Math.PI, 0.4, 0)];
     expect(viewDirection("front", groupFrame(both, LH, RH))[2]).toBeLessThan(-0.9);
+  });
+
+  // issue 26: the side view looked exactly along a pair's line, one person behind the other
+  const UPPER = ["pelvis", "spine1", "spine2", "spine3", "neck", "head", "left_shoulder", "right_shoulder", "left_hip", "right_hip"].map((n) => skeleton.joints.indexOf(n));
+  /** Each pose's projected x range (NDC) of its trunk, head and shoulders. */
+  function trunkX(poses: Float32Array[], fit: { position: Vec3; target: Vec3 }, aspect: number): [number, number][] {
+    const camera = new THREE.PerspectiveCamera(40, aspect, 0.05, 200);
+    camera.position.set(...fit.position);
+    camera.lookAt(...fit.target);
+    camera.updateMatrixWorld();
+    return poses.map((p) => {
+      const xs = UPPER.map((j) => new THREE.Vector3(p[3 * j], p[3 * j + 1], p[3 * j + 2]).project(camera).x);
+      return [Math.min(...xs), Math.max(...xs)];
+    });
+  }
+  for (const gap of [0.7, 1, 1.5]) {
+    for (const angle of [0, 2.1]) {
+      it(`the side view frames both of a pair ${gap} m apart, apart on screen (line at ${angle} rad)`, () => {
+        const pair = facingPair(gap, angle);
+        const g = groupFrame(pair, LH, RH);
+        expect(g.span).toBeCloseTo(gap, 6);
+        const dir = viewDirection("side", g);
+        const line = [Math.cos(angle), Math.sin(angle)];
+        const along = (dir[0] * line[0] + dir[2] * line[1]) / Math.hypot(dir[0], dir[2]);
+        expect(along).toBeGreaterThan(Math.cos(pairSideTurn(gap)) - 1e-6); // from Person 2's end
+        expect(along).toBeLessThan(Math.cos((30 * Math.PI) / 180) + 1e-6); // never along the line
+        const fit = fitView(dir, spheres(pair), 40, 16 / 9);
+        const [a, b] = trunkX(pair, fit, 16 / 9);
+        expect(Math.max(b[0] - a[1], a[0] - b[1]), "trunks apart on screen").toBeGreaterThan(0);
+        // the old side view, along the line: one trunk covered the other
+        const old: Vec3 = [line[0] * 0.99, 0.14, line[1] * 0.99];
+        const [c, d] = trunkX(pair, fitView(old, spheres(pair), 40, 16 / 9), 16 / 9);
+        expect(Math.min(c[1], d[1]) - Math.max(c[0], d[0])).toBeGreaterThan(0);
+      });
+    }
+  }
+
+  it("turns the side view just enough: 30° for a pair far apart, up to 65° for a close one", () => {
+    expect(pairSideTurn(3)).toBeCloseTo((30 * Math.PI) / 180, 6);
+    expect(Math.sin(pairSideTurn(0.8)) * 0.8).toBeCloseTo(SIDE_CLEAR, 6);
+    expect(pairSideTurn(0.3)).toBeCloseTo((65 * Math.PI) / 180, 6);
+    // one person: the side view is their left, level
+    const one = viewDirection("side", groupFrame([pose(0, 0, 0)], LH, RH));
+    expect(Math.abs(one[0])).toBeGreaterThan(0.98);
   });
 
   it("stands far enough back for a spread group and never closer than the minimum", () => {

@@ -11,10 +11,14 @@
 // "The group's front" is one person's facing; for two, the perpendicular to the line between
 // them on the side both face, or where they face each other (or away), the side from which
 // Person 1 is on the left and Person 2 on the right. The side view's camera stands at the front
-// view's screen right (as Blender's "Right" view): one person's left, a pair's Person 2 end.
+// view's screen right (as Blender's "Right" view): one person's left; for a pair, from Person 2's
+// end but turned off their line towards the front (`pairSideTurn`) just enough that the two
+// stand apart on screen — exactly along the line one stood behind the other (issue 26).
 
 export type Vec3 = [number, number, number];
 export type ViewPreset = "default" | "front" | "side" | "top" | "fit";
+
+const DEG = Math.PI / 180;
 
 /** The group's horizontal frame, unit [x, z] vectors from the group: `front`, where a front
  * view's camera stands, and `side`, the front view's screen right; `pair` for two people. */
@@ -22,9 +26,24 @@ export interface GroupFrame {
   front: [number, number];
   side: [number, number];
   pair: boolean;
+  /** A pair's distance between the pelvises on the floor (m); 0 for one person. */
+  span: number;
 }
 
-const DEG = Math.PI / 180;
+/** How far apart (m, across the screen) a pair's pelvises must be drawn in the side view so
+ * that their bodies (about 0.45 m across at the shoulders) do not cover each other. */
+export const SIDE_CLEAR = 0.5;
+const SIDE_TURN = { min: 30 * DEG, max: 65 * DEG };
+
+/** The side view's turn off a pair's line towards the front (radians) for pelvises `span`
+ * metres apart: the least at which they are SIDE_CLEAR apart across the screen (span × sin),
+ * at least 30° (depth still reads) and at most 65° (a hug, close together, is seen mostly from
+ * the front: no side view keeps them apart). */
+export function pairSideTurn(span: number): number {
+  const need = span > SIDE_CLEAR ? Math.asin(SIDE_CLEAR / span) : SIDE_TURN.max;
+  return Math.min(SIDE_TURN.max, Math.max(SIDE_TURN.min, need));
+}
+
 const ELEVATION = { default: 14 * DEG, front: 8 * DEG, side: 8 * DEG };
 /** The default view turns this far from the front towards the side: one person in 3/4 (the
  * old world-fixed default's 23°, for a person facing +Z), a pair a little, to read depth
@@ -61,13 +80,14 @@ export function groupFrame(poses: ArrayLike<number>[], lh: number, rh: number): 
   const screenRight = ([fx, fz]: [number, number]): [number, number] => [fz, -fx];
   if (!line) {
     const front = faces[0] ?? [0, 1];
-    return { front, side: screenRight(front), pair: false };
+    return { front, side: screenRight(front), pair: false, span: 0 };
   }
   // the perpendicular from which the line runs left to right (Person 1 left, Person 2 right)
   let front: [number, number] = [-line[1], line[0]];
   const lean = (faces[0][0] + faces[1][0]) * front[0] + (faces[0][1] + faces[1][1]) * front[1];
   if (lean < -0.5) front = [-front[0], -front[1]]; // both face the other side: see their fronts
-  return { front, side: screenRight(front), pair: true };
+  const span = Math.hypot(poses[1][0] - poses[0][0], poses[1][2] - poses[0][2]);
+  return { front, side: screenRight(front), pair: true, span };
 }
 
 /** The unit direction from the target to the camera for a preset (not "fit": that keeps the
@@ -77,7 +97,11 @@ export function viewDirection(preset: Exclude<ViewPreset, "fit">, g: GroupFrame)
   const [sx, sz] = g.side;
   const level = (x: number, z: number, el: number): Vec3 => [x * Math.cos(el), Math.sin(el), z * Math.cos(el)];
   if (preset === "front") return level(fx, fz, ELEVATION.front);
-  if (preset === "side") return level(sx, sz, ELEVATION.side);
+  if (preset === "side") {
+    // a pair: from Person 2's end, turned towards the front until both are apart on screen
+    const turn = g.pair ? pairSideTurn(g.span) : 0;
+    return level(sx * Math.cos(turn) + fx * Math.sin(turn), sz * Math.cos(turn) + fz * Math.sin(turn), ELEVATION.side);
+  }
   if (preset === "top") return normalise([fx * TOP_TILT, 1, fz * TOP_TILT]);
   const yaw = g.pair ? YAW.pair : YAW.one; // default: from the front, turned towards the side
   return level(fx * Math.cos(yaw) + sx * Math.sin(yaw), fz * Math.cos(yaw) + sz * Math.sin(yaw), ELEVATION.default);
