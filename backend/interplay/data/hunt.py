@@ -51,8 +51,12 @@ What would close the gaps: CMU's own files. A copy of una-dinosauria/cmu-mocap's
 18–23, 33/34, 56, 75, 79, 80, 86, 90, 111, 113–115, 135, 137, 140–144 (exercise, boxing, climbing,
 sitting, carrying, chores, emotions, martial arts, get-ups, two-person) under ../shared/data would add roughly 2–4 h of single-person
 capture and ~0.5 h of real two-person capture in 15+ interaction kinds under CMU's commercial-friendly
-terms; the build then needs a retargeter for that conversion's ASF-named skeleton (Hips, LHipJoint,
-LeftUpLeg …, the same bones as `cmu_acclaim`).
+terms. The build is ready for the pairs: `cmu_daz` reads that conversion (its MotionBuilder bone names
+are Acclaim's bones renamed), and `interplay data build --staged --only cmu-pairs` pairs subject A's and
+B's trials (18/19, 20/21, 22/23, 33/34) from `../shared/data/cmu-pairs/0SS/SS_TT.bvh`, labels each with an
+interaction kind (`interplay.data.cmu_pairs.KINDS`: handshake, high-five, help up, pull, comfort, hand
+over, arm wrestle, throw-catch, walk arm in arm …) and measures its contact windows. Single-person
+subjects would need a builder like `cmu-bvh`'s over the same files (not written yet).
 
 ### Staged sources (opt-in, `models/data/staged/`)
 `interplay data build --staged` reads named snapshots from `/work/.mirror` (fetch step and manifest in

@@ -26,8 +26,10 @@ import time
 from pathlib import Path
 
 from interplay.data.card import _family_lines, _hours, _rate_lines
+from interplay.data.cmu_pairs import PAIRS, build_cmu_pairs
 from interplay.data.licences import BANDAI_NAMCO, MIT_REACTIDLE
 from interplay.data.mirror import Snapshot, SnapshotMissing, mirror_root
+from interplay.data.pairs import pair_contact_lines
 from interplay.data.splits import _stable_rank, add_captions, stratified_split
 from interplay.motion.clip import DATA_DIR, Clip, save_clips
 from interplay.motion.labels import label_family
@@ -48,7 +50,13 @@ REACTIDLE = Snapshot(
     path=".",
     licence="MIT (LICENSE.txt, \"Copyright (c) 2025 [RSAIT]\")")
 
-SNAPSHOTS = {"bandai-namco-2": BANDAI, "reactidle": REACTIDLE}
+CMU_MOCAP = Snapshot(
+    repo="una-dinosauria/cmu-mocap",
+    commit="62ac0fb0ec43cff2bf66426928f4fa6682d4bbdc",
+    path=".",
+    licence="CMU terms (mocap.cs.cmu.edu; the repository has no licence of its own)")
+
+SNAPSHOTS = {"bandai-namco-2": BANDAI, "reactidle": REACTIDLE, "cmu-pairs": CMU_MOCAP}
 SKIPPED: list[tuple[str, list[str]]] = []
 # Files under a staged source's path that its snapshot lacks (it leaves out files of 4 MiB and more).
 ABSENT: dict[str, list[str]] = {}
@@ -109,7 +117,9 @@ def assign_staged_splits(clips: list[Clip]) -> None:
     groups: dict[str, list[str]] = {}
     people: dict[str, list[str]] = {}
     for c in clips:
-        if c.source == "reactidle":
+        if c.source == "cmu-pairs":
+            groups.setdefault(f"cmu-pairs:{c.meta['kind']}", []).append(c.id)
+        elif c.source == "reactidle":
             people.setdefault(c.meta["person"], []).append(c.id)
         else:
             groups.setdefault(f"{c.source}:{c.meta.get('content', label_family(c.prompt))}", []).append(c.id)
@@ -129,12 +139,24 @@ def _check_lines(clips: list[Clip]) -> list[str]:
     out = []
     for source in SNAPSHOTS:
         group = [c for c in clips if c.source == source]
-        ok = [all(check(c.people[0], frame)[0] for check in (no_pops, grounded))
-              for c in group for frame in [body_frame(c.people[0], FPS)]]
+        ok = [all(check(p, body_frame(p, FPS))[0] for p in c.people for check in (no_pops, grounded))
+              for c in group]
         out.append(f"- {source}: {sum(ok)} of {len(group)} clips pass `no_pops` and `grounded` "
                    "(`interplay.motion.checks.named`); bones are fixed by the fit (IK → FK), the broken-root "
                    "and foot-contact checks of `interplay.motion.retarget.checks` ran in the retargeter.")
     return out
+
+
+def _pair_rate_lines(clips: list[Clip]) -> list[str]:
+    """CMU's pairs are read at CMU's indexed rate; where `estimate_true_fps` disagrees for a
+    person, the pair is named."""
+    pairs = [c for c in clips if c.source == "cmu-pairs"]
+    if not pairs:
+        return []
+    used = sorted({f"{c.meta['source_fps']:g}" for c in pairs})
+    off = [c.id for c in pairs if any(abs(e - c.meta["source_fps"]) > 1e-6 for e in c.meta["fps_estimate"])]
+    return [f"- cmu-pairs: CMU's indexed rate used ({', '.join(used)} fps); the estimate agrees for both people "
+            f"in {len(pairs) - len(off)} of {len(pairs)} pairs" + (f" (differs: {', '.join(off)})" if off else "") + "."]
 
 
 def write_staged_card(clips: list[Clip], out: Path) -> None:
@@ -149,21 +171,30 @@ def write_staged_card(clips: list[Clip], out: Path) -> None:
         frames = sum(p.shape[0] for c in group for p in c.people)
         lines.append(f"| {source} | {snap.repo} | `{snap.commit}` | `{snap.path}` | {snap.licence} | "
                      f"{len(group)} | {_hours(frames):.2f} |")
+    for source in SNAPSHOTS:
+        if not any(c.source == source for c in clips):
+            lines.append(f"\n{source}: not built on this machine: its raw files are in no mirror"
+                         + (" nor in ../shared/data/cmu-pairs (the snapshot is 789 MB, over the 500 MiB that "
+                            "`fetch` brings; `interplay.data.cmu_pairs` says what to copy there)"
+                            if source == "cmu-pairs" else "") + ".")
     lines += ["", "Fetch step: the search tool's `fetch github:<repository>` puts a bare git directory at",
               "`/work/.mirror/<owner>+<name>/repo`; the build reads the commit above from it (`git cat-file`)",
               "and stops with a message naming this step when it is absent.", "",
-              "## Frame rates", "", *[f"- {n}" for n in _rate_lines(clips, tuple(SNAPSHOTS))], ""]
+              "## Frame rates", "", *[f"- {n}" for n in _rate_lines(clips, ("bandai-namco-2", "reactidle"))],
+              *_pair_rate_lines(clips), ""]
     lines += ["## Checks", "", *_check_lines(clips), ""]
     left = [f"- `{f}`: {'; '.join(r)}" for f, r in SKIPPED]
     left += [f"- `{name}: {f}`: absent from the snapshot (4 MiB or more)" for name, fs in ABSENT.items() for f in fs]
     if left:
         lines += ["## Left out", "", *left, ""]
     lines += _family_lines(clips)
+    lines += pair_contact_lines(clips)
     lines += ["## Split (by take, never by window)", "",
               "bandai-namco-2: within each content, takes ordered by a stable hash of the file name: 15% test,",
               "10% val. reactidle: by performer (the number in the file name; one performer's acted and genuine",
               "takes share a split), performers ordered by a stable hash. ReActIdle's prompts fall in",
-              "`label_family`'s \"other\" (it has no idle family).", "",
+              "`label_family`'s \"other\" (it has no idle family). cmu-pairs: by trial within each interaction",
+              "kind (stable hash), as the main build splits salsa.", "",
               "| source | train | val | test |", "|---|---|---|---|"]
     for source in SNAPSHOTS:
         n = {s: sum(1 for c in clips if c.source == source and c.split == s) for s in ("train", "val", "test")}
@@ -172,6 +203,25 @@ def write_staged_card(clips: list[Clip], out: Path) -> None:
               f"- `bandai-namco-2.npz`: {BANDAI_NAMCO.consequence}. Credit: {BANDAI_NAMCO.credit}",
               f"- `reactidle.npz`: {MIT_REACTIDLE.consequence}. Credit: {MIT_REACTIDLE.credit}", ""]
     (out / "README.md").write_text("\n".join(lines))
+
+
+def _raw(name: str, tmp: Path, root: Path, source: Path) -> Path:
+    """The raw folder a staged source is built from: its snapshot, extracted into `tmp`; CMU's
+    pairs from ../shared/data/cmu-pairs when it exists, else their subjects' folders of the
+    una-dinosauria snapshot."""
+    if name != "cmu-pairs":
+        return SNAPSHOTS[name].extract(tmp, root)
+    if (source / "cmu-pairs").is_dir():
+        return source / "cmu-pairs"
+    try:
+        CMU_MOCAP.require(root)
+    except SnapshotMissing as e:
+        raise SnapshotMissing(f"{e}; or copy its BVH files of subjects 18-23, 33, 34 (0SS/SS_TT.bvh) into "
+                              f"{source / 'cmu-pairs'} (the snapshot is 789 MB, over what fetch brings)") from None
+    for pair in PAIRS:
+        for subject in pair:
+            CMU_MOCAP.extract(tmp, root, under=f"{subject:03d}")
+    return tmp
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -187,13 +237,19 @@ def main(argv: list[str] | None = None) -> int:
     ABSENT.clear()
     clips: list[Clip] = []
     builders = {"bandai-namco-2": lambda raw: build_bandai_more(raw, args.source, args.limit),
-                "reactidle": lambda raw: build_reactidle(raw)[:args.limit]}
+                "reactidle": lambda raw: build_reactidle(raw)[:args.limit],
+                "cmu-pairs": lambda raw: build_cmu_pairs(raw, args.source / "cmu-index" / "cmu_index.csv",
+                                                         SKIPPED)[:args.limit]}
+    # CMU's pairs only when their files are somewhere (../shared/data/cmu-pairs or a mirror).
+    names = args.only or [n for n in SNAPSHOTS if n != "cmu-pairs" or (args.source / "cmu-pairs").is_dir()
+                          or CMU_MOCAP.git_dir(root).is_dir()]
     try:
-        for name in args.only or list(SNAPSHOTS):
+        for name in names:
             with tempfile.TemporaryDirectory() as tmp:
                 t0 = time.time()
-                raw = SNAPSHOTS[name].extract(Path(tmp), root)
-                ABSENT[name] = [f for f in (raw / ".absent").read_text().split() if f.endswith(".bvh")]
+                raw = _raw(name, Path(tmp), root, args.source)
+                absent = raw / ".absent"
+                ABSENT[name] = [f for f in absent.read_text().split() if f.endswith(".bvh")] if absent.exists() else []
                 got = builders[name](raw)
                 print(f"{name:14s} {len(got):4d} clips  {time.time() - t0:6.1f} s", flush=True)
                 clips.extend(got)

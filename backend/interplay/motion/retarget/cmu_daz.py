@@ -1,11 +1,15 @@
 """CMU captures as BVH (`cmu-bvh/`, `cmu-salsa/`) → the 22-joint SMPL layout.
 
-Two skeleton families occur:
+Three skeleton families occur:
 - Daz-friendly (cgspeed's conversion; 56 of the 58 cmu-bvh trials and all salsa files): hip,
   abdomen, chest, neck, head, eyes, l/rCollar, l/rShldr, l/rForeArm, l/rHand (+ fingers),
   l/rButtock, l/rThigh, l/rShin, l/rFoot with an End Site at the ball of the foot. Every file
   carries the very same figure (offsets identical to 1e-4 cm across all 84 files, salsa
   after × 128), so the subjects' own proportions are gone; only the motion is theirs.
+- MotionBuilder names (una-dinosauria/cmu-mocap's conversion of every trial: Hips, LHipJoint,
+  LeftUpLeg, LeftLeg, LeftFoot, LeftToeBase, LowerBack, Spine, Spine1, Neck, Neck1, Head,
+  LeftShoulder, LeftArm, LeftForeArm, LeftHand …): the Acclaim bones renamed (`MB_NAMES`), read
+  as the Acclaim-named family below.
 - Acclaim names (16_01, 16_02): hip, l/rhipjoint, l/rfemur, l/rtibia, l/rfoot, l/rtoes,
   lowerback … head, l/rclavicle, l/rhumerus, l/rradius, l/rwrist …; a joint sits at the start
   of its Acclaim bone. The converter dropped the thorax bone (lowerneck and both clavicles
@@ -85,10 +89,31 @@ ACCLAIM_MAP: dict[str, JointSource] = {
     "left_wrist": "lwrist", "right_wrist": "rwrist",
 }
 
+# The ASF → BVH conversion of the whole CMU database (una-dinosauria/cmu-mocap) names the
+# Acclaim bones MotionBuilder-style; a joint still sits at the start of its Acclaim bone and the
+# thorax is dropped the same way, so the files are read as Acclaim-named ones after renaming.
+MB_NAMES: dict[str, str] = {
+    "Hips": "hip", "LowerBack": "lowerback", "Spine": "upperback", "Spine1": "thorax",
+    "Neck": "lowerneck", "Neck1": "upperneck", "Head": "head",
+    **{f"{side}{mb}": f"{s}{acclaim}" for side, s in (("Left", "l"), ("Right", "r")) for mb, acclaim in (
+        ("UpLeg", "femur"), ("Leg", "tibia"), ("Foot", "foot"), ("ToeBase", "toes"), ("Shoulder", "clavicle"),
+        ("Arm", "humerus"), ("ForeArm", "radius"), ("Hand", "wrist"), ("FingerBase", "hand"),
+        ("HandIndex1", "fingers"))},
+    "LHipJoint": "lhipjoint", "RHipJoint": "rhipjoint", "LThumb": "lthumb", "RThumb": "rthumb",
+}
+
 CENTIMETRE = 0.01
 SALSA_SCALED_UNIT = 1.28          # the salsa files are centimetres / 128
 ACCLAIM_UNIT = 0.0254 / 0.45      # Acclaim `length 0.45`: inches / 0.45
 BODY_HEIGHT_RANGE = (1.2, 2.2)    # plausible rest height (metres), to catch a wrong unit
+
+
+def acclaim_names(bvh: Bvh) -> Bvh:
+    """A MotionBuilder-named CMU conversion (`MB_NAMES`) renamed to Acclaim's bone names;
+    any other file unchanged."""
+    if not {"Hips", "LowerBack", "Spine1", "LeftUpLeg", "LeftLeg", "LeftToeBase"} <= set(bvh.names):
+        return bvh
+    return replace(bvh, names=tuple(MB_NAMES.get(n, n) for n in bvh.names))
 
 
 def skeleton_family(bvh: Bvh) -> str:
@@ -126,7 +151,7 @@ def file_unit(bvh: Bvh, family: str) -> float:
 
 def _read(path: str | Path, scale: float | None) -> tuple[dict[str, np.ndarray], dict[str, JointSource], dict]:
     """A CMU BVH → named joint positions at its native frames (metres), its joint map, meta."""
-    bvh = read_bvh(Path(path))
+    bvh = acclaim_names(read_bvh(Path(path)))
     family = skeleton_family(bvh)
     if family == "acclaim":
         bvh = _repair_acclaim_thorax(bvh)
@@ -209,5 +234,5 @@ def load_salsa_pair(lead_path: str | Path, follow_path: str | Path, fps: float |
     return people, offsets, meta
 
 
-__all__ = ["DAZ_MAP", "ACCLAIM_MAP", "load_cmu_bvh", "load_salsa_pair", "read_cmu_index",
+__all__ = ["DAZ_MAP", "ACCLAIM_MAP", "MB_NAMES", "acclaim_names", "load_cmu_bvh", "load_salsa_pair", "read_cmu_index",
            "skeleton_family", "rest_height", "file_unit"]
