@@ -44,6 +44,22 @@ def slow_generator() -> SlowGenerator:
     return SlowGenerator()
 
 
+def slow_real_generator():
+    """The real models (`load_generator`), `INTERPLAY_TEST_CHUNK_DELAY_S` seconds per streamed
+    chunk (40 frames): a job that is surely still running when a test kills its server
+    (e2e/specs/restart.spec.ts)."""
+    from interplay.generators.router import load_generator
+    gen = load_generator()
+    inner, delay = gen.stream, float(os.environ.get("INTERPLAY_TEST_CHUNK_DELAY_S", "0.1"))
+
+    def stream(req, plan):
+        for item in inner(req, plan):
+            time.sleep(delay)
+            yield item
+    gen.stream = stream      # type: ignore[method-assign]
+    return gen
+
+
 @dataclass
 class FakeEdit:
     joints: np.ndarray
