@@ -58,7 +58,7 @@ class EditCreate(BaseModel):
                       "frames": [20, 80], "seed": 3}]})
 
     part: str | None = Field(default=None, description="What to edit: left_arm, right_arm, "
-                             "left_leg, right_leg, whole_body (default) or a model part "
+                             "left_leg, right_leg, head, whole_body (default) or a model part "
                              "(left_upper, right_upper, left_lower, right_lower).")
     prompt: str | None = Field(default=None, description=f"What the edited part does, "
                                f"1–{MAX_PROMPT} characters (optional with a trajectory).")

@@ -157,7 +157,7 @@ def register(sub) -> None:
                        "with SPAM")
     p.add_argument("motion", help="motion JSON file to edit")
     p.add_argument("--part", default="whole_body", help="left_arm, right_arm, left_leg, "
-                   "right_leg, whole_body (default) or a model part such as left_upper")
+                   "right_leg, head, whole_body (default) or a model part such as left_upper")
     p.add_argument("--prompt", help="what the edited part does (optional with --trajectory)")
     p.add_argument("--frames", type=frame_range, help="a:b — edit frames a … b−1 only")
     p.add_argument("--seed", type=int)

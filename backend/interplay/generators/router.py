@@ -37,6 +37,7 @@ from interplay.generators.coverage import cover
 from interplay.generators.interaction.generator import NAME as COMPOSE
 from interplay.generators.interaction.generator import InteractionGenerator
 from interplay.generators.plan import GenerationPlan
+from interplay.generators.primitives.edit import head_edit
 from interplay.generators.retrieval.generator import RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieve_edit.generator import RetrieveEditGenerator
@@ -123,9 +124,13 @@ class Router:
         by IK over the frames, which the edit benchmark measured holding where SPAM's
         re-generation did not; one leg's kick from a captured kick of that leg
         (`retrieve_edit.leg_edit`: SPAM's edit gave no kick and moved the untouched joints
-        30–50 cm); anything else by SPAM's edit (`SpamGenerator.edit`)."""
+        30–50 cm); the head (part "head": look, nod, shake) by the head primitive
+        (`primitives.edit`: only the head joint moves), never SPAM; anything else by SPAM's
+        edit (`SpamGenerator.edit`)."""
         if isinstance(prompt, str) and prompt.strip():
             s = seed if seed is not None else random_seed()
+            if (part or "").strip().lower() == "head":
+                return _head_edit(joints, prompt, frames, self.index.encoder, s)
             made = pose_edit(joints, part, prompt, frames)
             if made is not None:
                 return _laid_edit(*made, limbs=made[1]["arms"], seed=s)
@@ -139,6 +144,18 @@ class Router:
 
     def generate(self, req: Request) -> Motion:
         return generate_motion(self, req)
+
+
+def _head_edit(joints: np.ndarray, prompt: str, frames: tuple[int, int] | None, encoder,
+               seed: int) -> tuple[Edit, dict]:
+    """A head edit by the head primitive (`primitives.edit`): only the head joint moves."""
+    out, entry = head_edit(joints, prompt, frames, encoder)
+    entry["parts"], entry["seed"] = ["head"], seed
+    a, b = entry["frames"]
+    return Edit(joints=out, parts=("head",), frames=(int(a), int(b)), masked_tokens=0, steps=0,
+                untouched_change_cm=entry["untouched_change_cm"],
+                untouched_pose_change_cm=entry["untouched_change_cm"],
+                model_untouched_change_cm=0.0), entry
 
 
 def _laid_edit(out: np.ndarray, entry: dict, limbs: list[str], seed: int) -> tuple[Edit, dict]:

@@ -22,7 +22,7 @@ import re
 from interplay.catalogue.load import catalogue
 from interplay.planner.decompose import Action, decompose, split_subject
 from interplay.planner.schema import Coverage
-from interplay.planner.verbs import VERBS, is_verb, lookup, noun_verb
+from interplay.planner.verbs import VERBS, doing_nouns, is_verb, lookup, noun_verb
 
 SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest known phrase
 _FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
@@ -87,7 +87,8 @@ def coverage_of(action: Action, named: list[tuple[str, str]] | None = None) -> C
     cat = catalogue()
     gesture = next((name for out, name in named or ()
                     if any(step.split(" while ")[0] in action.text for step in out.split(", then "))), None)
-    name = gesture or (action.verb.base if action.verb is not None else None)
+    noun = next((n for n in doing_nouns() if action.text.startswith(f"does a {n}")), None)
+    name = gesture or noun or (action.verb.base if action.verb is not None else None)
     entry = cat.get(name) if name else None
     how = entry.made_by.how if entry is not None else "capture"
     return Coverage(how=how, similarity=1.0, shown=action.text[:300],  # type: ignore[arg-type]

@@ -43,7 +43,7 @@ from interplay.motion.skeleton import FPS
 Shape = Literal["line", "arc", "circle", "zigzag", "s_curve", "heart", "figure_eight", "square",
                 "spiral", "polyline", "free"]
 SHAPES: tuple[Shape, ...] = get_args(Shape)
-PARTS = ("left_arm", "right_arm", "left_leg", "right_leg")
+PARTS = ("left_arm", "right_arm", "left_leg", "right_leg", "head")
 MAX_SEGMENTS = 16
 
 # The cost bounds of a trajectory, whatever its form (drawn points, preset, waypoints, an LLM's
@@ -172,6 +172,7 @@ class PartEdits(BaseModel):
     right_arm: str | None = None
     left_leg: str | None = None
     right_leg: str | None = None
+    head: str | None = None
 
     @field_validator("*")
     @classmethod

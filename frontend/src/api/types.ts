@@ -28,7 +28,7 @@ export interface ReactRequest {
 }
 
 /** Body parts the edit endpoint takes (aliases of CoMA's four parts, or the whole body). */
-export type EditPart = "left_arm" | "right_arm" | "left_leg" | "right_leg" | "whole_body";
+export type EditPart = "left_arm" | "right_arm" | "left_leg" | "right_leg" | "head" | "whole_body";
 
 export interface EditRequest {
   part?: EditPart;

@@ -1,5 +1,6 @@
 // Which editable body part a joint (or the bone ending at it) belongs to, for click-to-edit:
-// arms from the collar down, legs from the hip down, everything else is the whole body.
+// arms from the collar down, legs from the hip down, the head (and neck) the head, everything
+// else is the whole body.
 import type { EditPart } from "../api/types";
 
 const PREFIXES: [RegExp, EditPart][] = [
@@ -7,6 +8,7 @@ const PREFIXES: [RegExp, EditPart][] = [
   [/^right_(collar|shoulder|elbow|wrist)$/, "right_arm"],
   [/^left_(hip|knee|ankle|foot)$/, "left_leg"],
   [/^right_(hip|knee|ankle|foot)$/, "right_leg"],
+  [/^(head|neck)$/, "head"],
 ];
 
 export const PART_LABELS: Record<EditPart, string> = {
@@ -14,6 +16,7 @@ export const PART_LABELS: Record<EditPart, string> = {
   right_arm: "Right arm",
   left_leg: "Left leg",
   right_leg: "Right leg",
+  head: "Head",
   whole_body: "Whole body",
 };
 

@@ -7,7 +7,9 @@ laid over them:
    (`arm_poses`); the legs, pelvis and untouched arm stay exactly as captured;
 2. knees lifted high in every step where the plan asks for it (`leg_lifts`); a last segment
    asked to go slowly played slower where its captures go faster than a slow walk (`pace`);
-3. the whole motion put on the floor where it carries weight (`ground.on_floor`).
+3. segments whose words no capture covers but a motion primitive does (push-ups, claps, a
+   limp, a nod) built by that primitive and placed where the motion is (`primitive_steps`);
+4. the whole motion put on the floor where it carries weight (`ground.on_floor`).
 
 Every choice is written into the plan: the captures per segment (as retrieval's), and per
 segment the arm actions laid over it and the part edits left to the captured motion
@@ -39,6 +41,7 @@ from interplay.generators.retrieve_edit.holds import apply_hold, hold_of, query_
 from interplay.generators.retrieve_edit.holds import reason as hold_reason
 from interplay.generators.retrieve_edit.leg_lifts import lift_knees
 from interplay.generators.retrieve_edit.pace import SLOW_MAX_M_S, slow_down
+from interplay.generators.retrieve_edit.primitive_steps import choose, lay
 from interplay.motion.motion import Motion
 
 NAME: GeneratorName = "retrieve_edit"
@@ -103,7 +106,9 @@ class RetrieveEditGenerator:
     def plan(self, req: Request) -> GenerationPlan:
         plan = self.retrieval.plan(req)
         plan.generator = NAME
+        made = choose(plan, self.index.encoder)
         _, reasons = _actions(plan)
+        reasons += made
         slow = _slowed(plan)
         if slow is not None:
             reasons.append(f"segment {slow.index}: played slower where its captures travel faster "
@@ -134,6 +139,8 @@ class RetrieveEditGenerator:
         acts, _ = _actions(plan)
         if acts:
             people[0] = apply(people[0], acts)
+        if plan.persons == 1:
+            people[0] = lay(people[0], plan)
         return [on_floor(p).astype(np.float32) for p in people]
 
     def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:

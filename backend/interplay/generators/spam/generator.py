@@ -23,7 +23,7 @@ from interplay.planner.schema import Segment
 
 log = logging.getLogger(__name__)
 WHOLE_BODY = ("whole_body", "body", "all", "full_body")
-EDIT_PARTS = tuple(sk.PART_ALIASES) + ("whole_body",) + sk.PART_NAMES
+EDIT_PARTS = tuple(sk.PART_ALIASES) + ("whole_body",) + sk.PART_NAMES + ("head",)
 
 
 def resolve_edit_part(part: str | None) -> list[str]:
@@ -34,6 +34,8 @@ def resolve_edit_part(part: str | None) -> list[str]:
     key = part.strip().lower().replace(" ", "_").replace("-", "_")
     if key in WHOLE_BODY:
         return list(sk.PART_NAMES)
+    if key == "head":          # no SPAM part: the router edits it by the head primitive
+        return ["head"]
     try:
         return [sk.resolve_part(key)]
     except ValueError:
@@ -44,8 +46,8 @@ def segment_texts(segment: Segment) -> str | dict[str, str]:
     """SPAM's text for a plan segment: its prompt, or — when the planner split it into a
     whole-body `base` and per-part `edits` (CoMA's P_base and P_edit) — the base for every
     part and each edit for its own part."""
-    edits = segment.edits.named()
-    if not edits:
+    edits = {p: t for p, t in segment.edits.named().items() if p != "head"}   # no SPAM part:
+    if not edits:                                 # the head primitive makes head edits
         return segment.prompt
     return {"global": segment.base or segment.prompt, **edits}
 
@@ -84,6 +86,9 @@ class SpamGenerator:
         if not isinstance(prompt, str) or not prompt.strip():
             raise ValueError("the edit prompt is empty")
         parts = resolve_edit_part(part)
+        if parts == ["head"]:
+            raise ValueError("SPAM has no head part: head edits are the head primitive's "
+                             "(generators/primitives)")
         seed = seed if seed is not None else random_seed()
         edit = self.spam.edit(joints, parts, prompt.strip(), seed, frames=frames, context=context)
         entry = {"generator": "spam", "part": part or "whole_body", "parts": list(edit.parts),
