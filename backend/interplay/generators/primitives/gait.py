@@ -31,7 +31,7 @@ LIMP_SLOW = 0.6        # … the good leg's this much (slower)
 LIMP_LEAN_DEG = 7.0    # the trunk's lean over the sore leg while it carries
 STUMBLE_S = 1.6        # a stumble's length: trip, pitch forward, recover
 STUMBLE_DEG = 28.0
-SWAY_DEG = 10.0
+SWAY_DEG = 14.0
 
 
 def stance(joints: np.ndarray) -> dict[str, np.ndarray]:

@@ -58,29 +58,15 @@ def _ramp(t: int) -> np.ndarray:
     return np.minimum(ease((idx + 1) / r), ease((t - idx) / r))
 
 
-def _rest_angles() -> tuple[float, float]:
-    v = sk.REST_OFFSETS[sk.HEAD]
-    return float(np.degrees(np.arctan2(-v[2], v[1]))), float(np.degrees(np.arctan2(v[0], v[2])))
-
-
 def _look_at_angles(j: np.ndarray, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(pitch, yaw) offsets (T,) that turn the head from where it points now (its bone's
-    angles against the rest pose's) to look at `point` (T, 3)."""
+    """(pitch, yaw) (T,) that turn a head looking along the chest to look at `point` (T, 3)
+    (performers' head joints sit differently, so the base's own head angle is not read)."""
     left, up, chest = trunk_axes(j)
     d = np.asarray(point, dtype=np.float64) - j[:, sk.NECK]
     a, u, c = (d * left).sum(-1), (d * up).sum(-1), (d * chest).sum(-1)
-    want_yaw = np.clip(np.degrees(np.arctan2(a, c)), -MAX_YAW_DEG, MAX_YAW_DEG)
-    want_pitch = np.clip(np.degrees(np.arctan2(u - 0.1, np.hypot(a, c))), -MAX_PITCH_DEG, MAX_PITCH_DEG)
-    p0, y0 = pitch_yaw(j)
-    rp, ry = _rest_angles()
-    v = j[:, sk.HEAD] - j[:, sk.NECK]
-    level = np.hypot((v * left).sum(-1), (v * chest).sum(-1)) > 0.03   # yaw is readable
-    turned = np.where(level, _wrap(y0 - ry), 0.0)
-    return want_pitch - (p0 - rp), _wrap(want_yaw - turned)
-
-
-def _wrap(deg: np.ndarray) -> np.ndarray:
-    return (np.asarray(deg) + 180.0) % 360.0 - 180.0
+    yaw = np.clip(np.degrees(np.arctan2(a, c)), -MAX_YAW_DEG, MAX_YAW_DEG)
+    pitch = np.clip(np.degrees(np.arctan2(u - 0.1, np.hypot(a, c))), -MAX_PITCH_DEG, MAX_PITCH_DEG)
+    return pitch, yaw
 
 
 def head(base: np.ndarray, action: str, count: int = 1, degrees: float | None = None,

@@ -96,8 +96,10 @@ PRIMITIVE_TABLE: list[dict] = [
                       "turns to face the partner with the eyes", "gazes at someone"]},
     {"name": "nod", "builder": "head", "params": {"action": "nod"}, "posture": "standing",
      "parts": ("head",), "counts": True, "seconds": 0.8,
-     "descriptions": ["nods", "nods the head yes", "bobs the head up and down"]},
+     "descriptions": ["nods", "nods the head yes", "bobs the head up and down",
+                      "nods a couple of times", "nods several times"]},
     {"name": "shake_head", "builder": "head", "params": {"action": "shake"}, "posture": "standing",
      "parts": ("head",), "counts": True, "seconds": 0.9,
-     "descriptions": ["shakes the head", "shakes his head no", "turns the head from side to side"]},
+     "descriptions": ["shakes the head", "shakes his head no", "turns the head from side to side",
+                      "shakes the head a couple of times"]},
 ]
