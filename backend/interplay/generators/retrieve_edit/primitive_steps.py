@@ -54,7 +54,7 @@ def _generic_verb(seg: GenerationSegment) -> bool:
 
 def choose(plan: GenerationPlan, encoder) -> list[str]:
     """Mark the segments a primitive makes (their coverage); the plan's reasons for each."""
-    reasons = []
+    reasons: list[str] = []
     if plan.persons != 1:
         return reasons
     for seg in plan.segments:
