@@ -92,6 +92,42 @@ def cmd_export_floor(args) -> int:
     return 0
 
 
+def cmd_export_channels(args) -> int:
+    """BVH channel jumps on the library: per joint, the largest frame-to-frame change of any
+    rotation channel and its excess over the true turn, with each joint's fixed order (before)
+    and with the order each file picks (after, `formats/channels.channel_order`)."""
+    import numpy as np
+
+    from interplay.motion import skeleton as sk
+    from interplay.motion.clip import default_clips
+    from interplay.motion.formats.channels import _write_order, channel_jumps, channel_order
+    from interplay.motion.kinematics import floor_height
+    from interplay.motion.rig import solve_rig
+    clips = default_clips()[::args.every]
+    worst = np.zeros((2, 2, sk.NUM_JOINTS))          # (before/after, jump/excess, joint)
+    for clip in clips:
+        people = [np.asarray(p, np.float64) for p in clip.people]
+        floor = floor_height(people)
+        for joints in people:
+            if len(joints) < 2:
+                continue
+            local = solve_rig(joints, floor=floor).matrices()
+            for j, name in enumerate(sk.JOINT_NAMES):
+                for k, order in enumerate((_write_order(name), channel_order(name, local[:, j]))):
+                    jump, turn = channel_jumps(local[:, j], order)
+                    worst[k, 0, j] = max(worst[k, 0, j], jump.max())
+                    worst[k, 1, j] = max(worst[k, 1, j], (jump - turn).max())
+    print(f"{len(clips)} library clips: the largest BVH channel change a frame (deg) and its excess "
+          f"over the true turn, fixed orders (before) and per-file orders (after)")
+    print(f"{'joint':<15} {'jump before':>11} {'excess':>7} {'jump after':>10} {'excess':>7}")
+    for j, name in enumerate(sk.JOINT_NAMES):
+        print(f"{name:<15} {worst[0, 0, j]:>11.1f} {worst[0, 1, j]:>7.1f} {worst[1, 0, j]:>10.1f} "
+              f"{worst[1, 1, j]:>7.1f}")
+    print(f"{'all':<15} {worst[0, 0].max():>11.1f} {worst[0, 1].max():>7.1f} {worst[1, 0].max():>10.1f} "
+          f"{worst[1, 1].max():>7.1f}")
+    return 0
+
+
 def register(sub) -> None:
     p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
     p.add_argument("motion")
@@ -121,3 +157,8 @@ def register(sub) -> None:
     p = sub.add_parser("export-floor", help="the exports' floor pass measured on the library's "
                                             "clips that go low (a table)")
     p.set_defaults(func=cmd_export_floor)
+
+    p = sub.add_parser("export-channels", help="BVH channel jumps per joint on the library's "
+                                               "clips, fixed vs per-file Euler orders (a table)")
+    p.add_argument("--every", type=int, default=1, help="every n-th clip (default all, ~2 min)")
+    p.set_defaults(func=cmd_export_channels)

@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion import skeleton as sk
+from interplay.motion.formats.channels import channel_order
 from interplay.motion.formats.presets import (
     FPS_CHOICES as FPS_CHOICES,
 )
@@ -302,22 +303,6 @@ def smpl22_positions(bvh: Bvh) -> np.ndarray:
     return pos[:, [bvh.index(n) for n in sk.JOINT_NAMES]]
 
 
-# Rotation channel order of each joint we write. A Tait–Bryan order locks when its middle
-# angle nears ±90°, so the middle axis is one that turns little: for the root yaw is
-# outermost (people face any way) and pitch sits in the middle; spine, neck and legs put
-# flexion (X) outermost and side bend/abduction (Z) in the middle; arms, whose bones lie
-# along X, put their twist (X) in the middle. Z-up files use the same axes, renamed
-# (Y-up's Y is Z-up's Z and its Z is Z-up's -Y).
-def _write_order(name: str, up: str = "y") -> str:
-    if name == "pelvis":
-        order = "YXZ"
-    elif name.split("_")[-1] in ("collar", "shoulder", "elbow", "wrist"):
-        order = "ZXY"
-    else:
-        order = "XZY"
-    return order if up == "y" else order.translate(str.maketrans("YZ", "ZY"))
-
-
 def _fmt(values: np.ndarray, digits: int) -> str:
     # Round, then add 0.0 so that -0.0 prints as 0.
     return " ".join(f"{v:.{digits}f}" for v in np.round(values, digits) + 0.0)
@@ -328,7 +313,7 @@ def _write_joint(j: int, depth: int, offsets: np.ndarray, local: np.ndarray, end
     """Append joint j's HIERARCHY block (with its subtree) to lines and its Euler angles
     (T, 3) in degrees to columns, in the same depth-first order."""
     name, tab = names[j], "\t" * depth
-    order = _write_order(sk.JOINT_NAMES[j], up)
+    order = channel_order(sk.JOINT_NAMES[j], local[:, j], up)
     rot_channels = " ".join(f"{a}rotation" for a in order)
     root = j == sk.PELVIS
     lines += [f"{tab}{'ROOT' if root else 'JOINT'} {name}", f"{tab}{{",
