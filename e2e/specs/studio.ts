@@ -40,6 +40,7 @@ declare global {
       agentReviews: number;
       library: string[];
       shownPath: { person: number; points: [number, number][]; followed: boolean };
+      glowing: number[][];
       frameJoints(person: number, frame: number): number[][] | null;
       project(person: number, joint: number): [number, number] | null;
       groundAt(x: number, y: number): [number, number] | null;

@@ -4,6 +4,7 @@ import { useLibrary } from "./library";
 import { shownPath, useFollowed } from "./directing/followed";
 import { figureStats, useFigure } from "./figure";
 import { viewStats } from "./scene/views";
+import { glowStats } from "./scene/contactGlow";
 import { MARK_STRIDE } from "./scene/overlaps";
 import { copyCheck, type CopyCheck } from "./playback/verify";
 
@@ -41,6 +42,8 @@ export interface InterplayTestHook {
   readonly agentReviews: number;
   /** The path drawn on the floor now: the pending one, or the one the motion followed (`followed`). */
   readonly shownPath: { person: number; points: [number, number][]; followed: boolean };
+  /** Per person, the contact joints glowing green at the pose drawn (asked or new contacts). */
+  readonly glowing: number[][];
   /** The motion ids listed in My motions, newest first. */
   readonly library: string[];
   /** Joints ([x, y, z] × 22) of person p at frame t of the buffer, or null. */
@@ -144,6 +147,9 @@ export function installTestHook(target: Window = window): void {
       const s = useStudio.getState();
       const f = useFollowed.getState();
       return shownPath(s.path, f.path, f.show, s.motionId, s.versions.ids);
+    },
+    get glowing() {
+      return glowStats.joints.map((j) => [...j]);
     },
     get library() {
       return useLibrary.getState().items.map((m) => m.id);

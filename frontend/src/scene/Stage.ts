@@ -11,7 +11,7 @@ import type { MotionRig } from "../playback/rig";
 import type { CharacterMaker } from "../figure";
 import type { Character } from "./Character";
 import { CameraRig } from "./CameraRig";
-import { contactJoints } from "./colours";
+import { footJoints, glowingContacts, glowStats } from "./contactGlow";
 import type { ViewPreset } from "./framing";
 import { Ground } from "./Ground";
 import { FLOOR_COLOUR, LineGround } from "./LineGround";
@@ -292,14 +292,27 @@ export class Stage {
     this.dirty = true;
   }
 
-  /** Person p's contact joints at frame t, made once per frame (and buffer version), not at
-   * every refresh that blends towards the next frame. */
+  /** The skeleton's foot joints (whose contacts are the floor's), for the skeleton they are of. */
+  private feet: Set<number> = new Set();
+  private feetOf: Skeleton | null = null;
+
+  /** Person p's glowing contact joints at frame t, made once per frame (and buffer version),
+   * not at every refresh that blends towards the next frame. */
   private contactsAt(buffer: FrameBuffer, t: number, p: number): Set<number> {
     const h = this.highlights;
     if (h.frame !== t || h.version !== buffer.version || h.buffer !== buffer) {
       this.highlights = { frame: t, version: buffer.version, buffer, sets: [] };
     }
-    return (this.highlights.sets[p] ??= contactJoints(buffer.contacts[t], p));
+    // only where a contact is asked (a hand on the other person) or new (a foot coming down):
+    // feet planted on the floor no longer glow all the time (contactGlow.ts)
+    if (this.skeleton && this.feetOf !== this.skeleton) this.feet = footJoints(this.skeleton.joints);
+    this.feetOf = this.skeleton;
+    if (!this.highlights.sets[p]) {
+      this.highlights.sets[p] = glowingContacts(buffer.contacts, t, p, this.feet);
+      glowStats.joints[p] = [...this.highlights.sets[p]];
+      glowStats.joints.length = buffer.persons;
+    }
+    return this.highlights.sets[p];
   }
 
   /** Render if anything changed; true when a frame was drawn. */

@@ -30,7 +30,7 @@ export function Legend() {
         </div>
       ))}
       <div className="legend__row">
-        <span className="legend__item">
+        <span className="legend__item" title="A hand touching the other person, or a foot coming down (feet resting on the floor do not glow)">
           <i className="round" style={{ background: CONTACT_COLOUR }} />
           Contact
         </span>
