@@ -139,6 +139,8 @@ def _check_lines(clips: list[Clip]) -> list[str]:
     out = []
     for source in SNAPSHOTS:
         group = [c for c in clips if c.source == source]
+        if not group:
+            continue
         ok = [all(check(p, body_frame(p, FPS))[0] for p in c.people for check in (no_pops, grounded))
               for c in group]
         out.append(f"- {source}: {sum(ok)} of {len(group)} clips pass `no_pops` and `grounded` "
