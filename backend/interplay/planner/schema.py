@@ -172,7 +172,7 @@ class PartEdits(BaseModel):
     right_arm: str | None = None
     left_leg: str | None = None
     right_leg: str | None = None
-    head: str | None = None
+    head: str | None = None               # left out of the JSON when unset (plans before it)
 
     @field_validator("*")
     @classmethod
@@ -180,6 +180,13 @@ class PartEdits(BaseModel):
         if isinstance(v, str) and (not v.strip() or v.strip().lower() == "none"):
             return None
         return v
+
+    @model_serializer(mode="wrap")
+    def _drop_unset_head(self, handler: SerializerFunctionWrapHandler) -> dict:
+        out = handler(self)
+        if out.get("head") is None:
+            out.pop("head", None)
+        return out
 
     def named(self) -> dict[str, str]:
         return {p: getattr(self, p) for p in PARTS if getattr(self, p)}
