@@ -20,7 +20,7 @@ from __future__ import annotations
 import re
 
 from interplay.catalogue.load import catalogue
-from interplay.planner.decompose import Action, decompose, split_subject
+from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose, split_subject
 from interplay.planner.schema import Coverage
 from interplay.planner.verbs import VERBS, doing_nouns, is_verb, lookup, noun_verb
 
@@ -28,11 +28,21 @@ SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest k
 _FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
 
 
+def _without_subject(words: list[str]) -> list[str]:
+    """The words after a subject the decomposer left on ("a man drags …" → "drags …")."""
+    i = 0
+    while i < len(words) and (words[i] in _FILLER or words[i] in SUBJECT_NOUNS or
+                              words[i] in ("two", "one", "he", "she", "they", "someone")):
+        i += 1
+    return words[i:] if i < len(words) else words
+
+
 def _unknown_verb(words: list[str]) -> bool:
     """Does the clause start with a verb the catalogue does not know ("levitates", "juggles")?
     Such a clause is kept and shown as the nearest captures, never dropped silently; a state
     ("is tired", "feels happy": the catalogue's `not_motion` words) is dropped."""
-    if not words or words[0] in _FILLER:
+    words = _without_subject(words)
+    if not words:
         return False
     head = words[0]
     states = set(catalogue().words.lists.get("not_motion", ()))
@@ -70,6 +80,7 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
         reasons.append(f"dropped '{clause}': no motion in it")
         return None
     action.text = re.sub(r"^(?:two people|a person|the person|they|both)\s+", "", action.text)
+    action.text = " ".join(_without_subject(action.text.split()))
     reasons.append(f"unknown motion '{action.text}': kept as written")
     action.base, action.verb = f"a person {action.text}", VERBS["pose"]
     return action
