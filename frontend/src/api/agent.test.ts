@@ -2,6 +2,7 @@ import { describe, expect, it } from "vitest";
 import {
   agentFromReview,
   describeInstruction,
+  describeVersionEdit,
   initialAgent,
   instructionOutcomes,
   plainReason,
@@ -221,5 +222,25 @@ describe("verdicts read honestly (issue 26.4)", () => {
     expect(roundBadge("failed")).toEqual({ kind: "failed", text: "failed" });
     expect(roundBadge("not_covered")).toEqual({ kind: "not-covered", text: "not in the library" });
     expect(roundBadge("correct").text).toBe("needs correction");
+  });
+});
+
+describe("a version's own review (issue 26.3)", () => {
+  it("keeps the parent's rounds where the edit changed nothing and names the edit where it did", () => {
+    const a = agentFromReview({
+      segments: [
+        { segment: 0, reviews: [{ round: 0, captions: {}, score: 0.8, instructions: [], verdict: "ok" }], corrections: [] },
+        {
+          segment: 1,
+          reviews: [{ round: 0, captions: {}, score: 0.5, instructions: [], verdict: "ok" }],
+          corrections: [],
+          edit: { kind: "edit", part: "left_arm", prompt: "raises the left arm", frames: [22, 40] },
+        },
+      ],
+    });
+    expect(a[0].edit).toBeUndefined();
+    expect(a[1].edit && describeVersionEdit(a[1].edit)).toBe("left arm: “raises the left arm” (frames 22–40)");
+    expect(describeVersionEdit({ kind: "rerun", segment: 1, seed: 11 })).toBe("re-run with a new seed (seed 11)");
+    expect(describeVersionEdit({ kind: "edit", part: "whole_body", prompt: null, frames: [54, 84] })).toBe("redone in place (frames 54–84)");
   });
 });

@@ -24,11 +24,32 @@ export interface Correction {
   reason?: string;
 }
 
+/** What made a version's own review of a segment (its stored review's `edit`): the part edit,
+ * "Redo in place" (a whole-body edit of frames) or a segment re-run. */
+export interface VersionEdit {
+  kind: "edit" | "rerun" | string;
+  part?: string | null;
+  prompt?: string | null;
+  frames?: [number, number] | null;
+  segment?: number;
+  seed?: number | null;
+}
+
 export interface SegmentProgress {
   status: string;
   generator?: string;
   reviews: ReviewRound[];
   corrections: Correction[];
+  /** Set when these rounds are the review of the edit that made the version on screen. */
+  edit?: VersionEdit;
+}
+
+/** "left arm: “raises the left arm” (frames 20–40)", "re-run with a new seed (seed 11)". */
+export function describeVersionEdit(e: VersionEdit): string {
+  if (e.kind === "rerun") return `re-run with a new seed${typeof e.seed === "number" ? ` (seed ${e.seed})` : ""}`;
+  const frames = e.frames ? ` (frames ${e.frames[0]}–${e.frames[1]})` : "";
+  if (!e.part || e.part === "whole_body") return `${e.prompt ? `whole body: “${e.prompt}”` : "redone in place"}${frames}`;
+  return `${partWords(e.part)}: “${e.prompt ?? "edit"}”${frames}`;
 }
 
 /** Segment index → progress (indices as the plan numbers them). */
@@ -272,7 +293,7 @@ export function segmentVerdict(seg: SegmentProgress | undefined, finished: boole
 }
 
 interface StoredReview {
-  segments?: { segment: number; reviews?: unknown[]; corrections?: unknown[] }[];
+  segments?: { segment: number; reviews?: unknown[]; corrections?: unknown[]; edit?: VersionEdit }[];
 }
 
 /** The agent timeline of a stored motion (its `review`: the rounds per segment), replayed
@@ -287,6 +308,7 @@ export function agentFromReview(review: unknown): AgentState {
     for (const r of seg.reviews ?? []) state = reduceAgent(state, { type: "review", ...(r as object), segment: seg.segment } as StreamEvent);
     for (const c of seg.corrections ?? [])
       state = reduceAgent(state, { type: "correction", ...(c as object), segment: seg.segment } as StreamEvent);
+    if (seg.edit) state = { ...state, [seg.segment]: { ...state[seg.segment], edit: seg.edit } };
   }
   return state;
 }

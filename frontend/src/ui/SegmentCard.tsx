@@ -1,4 +1,4 @@
-import { describeInstruction, instructionOutcomes, partWords, plainReason, roundBadge, segmentVerdict, type SegmentProgress } from "../api/agent";
+import { describeInstruction, describeVersionEdit, instructionOutcomes, partWords, plainReason, roundBadge, segmentVerdict, type SegmentProgress } from "../api/agent";
 import "./agent.css";
 import type { PlanSegment } from "../api/types";
 import { rerunSegment } from "../directing/actions";
@@ -52,6 +52,11 @@ export function SegmentCard({ index, seg, progress, canRerun, canInbetween, fini
       {verdict && (
         <p className={`small verdict verdict--${verdict.kind}`} data-testid={`segment-verdict-${index}`}>
           {verdict.text}
+        </p>
+      )}
+      {progress?.edit && (
+        <p className="small muted review__version" data-testid={`version-review-${index}`}>
+          This version's own review, after its edit: {describeVersionEdit(progress.edit)}
         </p>
       )}
       {progress?.reviews.map((r) => (

@@ -5,15 +5,18 @@ same limits, as generation.
 
 Its stream is one event: `done` (the new motion is stored under the job's motion id) or
 `error`, with the HTTP status the request answers in the job's result (422 for a bad edit, 503
-when the model cannot edit or fails)."""
+when the model cannot edit or fails). The new version's review is its parent's, with the
+segments the edit changed reviewed again (`version_review`)."""
 
 from __future__ import annotations
 
 import logging
 
 from interplay.api.events import DoneEvent, ErrorEvent
+from interplay.api.runners.version_review import Reviewing
 from interplay.generators.base import EditUnavailable
 from interplay.pipeline.editing import edit_stored
+from interplay.pipeline.orchestrator import default_evaluator
 from interplay.pipeline.rerun import rerun_stored
 from interplay.pipeline.segment_source import Cancelled
 
@@ -26,7 +29,9 @@ def edit_job(job, generator, repo) -> None:
     if parent is None:
         return
     try:
-        edited = edit_stored(repo, generator, parent, spec.part, spec.prompt, spec.frames,
+        what = {"kind": "edit", "part": spec.part, "prompt": spec.prompt, "frames": spec.frames}
+        edited = edit_stored(Reviewing(repo, parent, what, default_evaluator()), generator,
+                             parent, spec.part, spec.prompt, spec.frames,
                              spec.seed, spec.trajectory, id=job.motion_id,
                              client_id=spec.client_id)
     except ValueError as exc:
@@ -46,7 +51,9 @@ def rerun_job(job, generator, repo) -> None:
     if parent is None:
         return
     try:
-        made = rerun_stored(repo, generator, parent, int(spec.segment or 0), int(spec.seed or 0),
+        what = {"kind": "rerun", "segment": int(spec.segment or 0), "seed": spec.seed}
+        made = rerun_stored(Reviewing(repo, parent, what, default_evaluator()), generator, parent,
+                            int(spec.segment or 0), int(spec.seed or 0),
                             client_id=spec.client_id, id=job.motion_id)
     except ValueError as exc:
         return _fail(job, 422, str(exc))
