@@ -147,6 +147,20 @@ def sway(frames: np.ndarray, t: int) -> np.ndarray:
     return loop[np.arange(t) % len(loop)]
 
 
+def loop_walk(walk: np.ndarray, t: int) -> np.ndarray:
+    """A captured walk made T frames long: cut where its pose (about the pelvis) comes back
+    nearest its first frame's, and the cycles laid end to end, each moved on the ground to
+    continue from where the last one stopped."""
+    rel = walk - walk[:, sk.PELVIS:sk.PELVIS + 1] * np.array([1.0, 0.0, 1.0])
+    half = len(walk) // 2
+    k = half + int(np.argmin(np.linalg.norm(rel[half:] - rel[0], axis=-1).mean(axis=1)))
+    cycle = walk[:k]
+    step = (walk[k] - walk[0])[sk.PELVIS] * np.array([1.0, 0.0, 1.0])
+    reps = -(-t // k)
+    out = np.concatenate([cycle + i * step for i in range(reps)])
+    return out[:t].copy()
+
+
 def _fit_bones(j: np.ndarray, ref: np.ndarray) -> np.ndarray:
     """The low pass shortens bones slightly: re-pose on the reference frame's bone lengths."""
     from interplay.motion.kinematics import fit_offsets, forward_kinematics, inverse_kinematics
@@ -182,9 +196,7 @@ def posture(name: str, seconds: float | None = None, frames: int | None = None,
     t = frames if frames is not None else max(2, int(round((seconds or 2.0) * sk.FPS)))
     if name == "walk":
         j, _ = found("walk")
-        if t > len(j):
-            raise ValueError(f"the captured walk is {len(j)} frames; {t} asked")
-        return j[:t].copy()
+        return j[:t].copy() if t <= len(j) else loop_walk(j, t)
     if name in ("standing", "seated"):
         j, _ = found("standing")
         base = _fit_bones(sway(j, t), j)
