@@ -31,7 +31,11 @@ def test_job_events_follow_algorithm_1_and_the_review_is_stored(real_client):
     for r in reviews:
         assert set(r["captions"]) == PARTS and all(isinstance(t, str) for t in r["captions"].values())
         assert isinstance(r["score"], float) and -1 <= r["score"] <= 1
-        assert r["verdict"] in ("ok", "correct") and (r["verdict"] == "ok") == (not r["instructions"])
+        assert r["verdict"] in ("ok", "correct", "failed", "not_covered", "unconfirmed")
+        assert (r["verdict"] == "ok") == (not r["instructions"] and r["verdict"] not in
+                                          ("not_covered", "unconfirmed"))
+        if r["verdict"] == "failed":      # it says why
+            assert r["checks"]["failed"] or r["instructions"]
         assert {"metrics", "failed", "windows"} <= set(r["checks"])
         for i in r["instructions"]:
             assert i["kind"] in ("edit_part", "inbetween", "regenerate") and i["reason"]

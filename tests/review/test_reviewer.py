@@ -82,7 +82,7 @@ def test_handshake_without_a_touch_is_missing_contact(clips):
     assert [i["kind"] for i in rv.instructions] == ["regenerate"]
 
 
-def test_correction_loop_keeps_improvements_and_stops_when_worse(clips):
+def test_correction_loop_keeps_improvements_and_redraws_again_when_worse(clips):
     walk = _clip(clips, "walk").people[0][:80]
     seg = _segment("a person squats", 80)
     squat = _clip(clips, "squat1Reps").people[0][:80]   # what the plan asks for
@@ -102,9 +102,13 @@ def test_correction_loop_keeps_improvements_and_stops_when_worse(clips):
         bad[..., 1] -= 0.2
         return [bad]
 
+    # a worse re-draw is not kept; another is tried in the next round; none passes: failed
     out = correct(seg, [walk], sink, rounds=2)
-    assert len(out.corrections) == 1 and not out.corrections[0]["accepted"]
-    assert np.array_equal(out.people[0], walk) and len(out.reviews) == 1
+    assert [c["accepted"] for c in out.corrections] == [False, False]
+    assert [c["round"] for c in out.corrections] == [1, 2]
+    assert np.array_equal(out.people[0], walk)
+    assert [r.verdict for r in out.reviews] == ["correct", "failed"]
+    assert out.last.round == 2 and out.last.body_confirmed is False
 
     def unable(instr, people, seed):
         raise CannotApply("no model")

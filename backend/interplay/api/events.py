@@ -19,6 +19,7 @@ from typing import Annotated, Any, ClassVar, Literal, Union
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter
 
 from interplay.pipeline.highlights import highlight_lists
+from interplay.review.records import Verdict
 
 
 class _Event(BaseModel):
@@ -83,7 +84,7 @@ class ReviewEvent(_Event):
     confirmed: dict[str, Any]
     checks: dict[str, Any]
     instructions: list[dict[str, Any]]
-    verdict: str
+    verdict: Verdict       # ok | correct (corrections follow) | failed | not_covered
 
 
 class CorrectionEvent(_Event):

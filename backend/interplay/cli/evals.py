@@ -75,16 +75,19 @@ def _review_honesty(args, generator) -> int:
     """The reviewer's verdicts against the benchmark's checks on the prompt suite's split."""
     import numpy as np
 
-    from interplay.eval.prompts.suite import load_suite, select
+    from interplay.eval.prompts import suite
     from interplay.eval.review import format_honesty, run_honesty
     from interplay.pipeline.orchestrator import default_evaluator, orchestrate
     if args.seeds < 1:
         raise CliError("--seeds must be at least 1")
+    ids = [i.strip() for i in args.ids.split(",")] if args.ids else None
     try:
-        prompts = select(load_suite(), args.split,
-                         ids=[i.strip() for i in args.ids.split(",")] if args.ids else None)
+        prompts = (suite.load_split(args.split, ids=ids) if hasattr(suite, "load_split")
+                   else suite.select(suite.load_suite(), args.split, ids=ids))
     except ValueError as exc:
         raise CliError(str(exc)) from None
+    # a part edit's prompt judges the edit, not the generation the reviewer sees: left out
+    prompts = [p for p in prompts if getattr(p, "edit", None) is None]
     if not prompts:
         raise CliError(f"no prompts in split {args.split!r}")
     evaluator = default_evaluator()

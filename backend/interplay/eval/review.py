@@ -102,7 +102,7 @@ def format_table(report: dict) -> str:
 
 
 # -- honesty: does the verdict agree with the benchmark's checks? ----------------------------
-VERDICT_ORDER = ("ok", "correct", "not_covered", "failed")     # worst last
+VERDICT_ORDER = ("ok", "unconfirmed", "correct", "not_covered", "failed")     # worst last
 
 
 def output_verdict(review: dict) -> str:
@@ -165,10 +165,10 @@ def format_honesty(report: dict) -> str:
     pct = lambda a, n: f"{a}/{n} = {a / n:.0%}" if n else "—"          # noqa: E731
     lines = [f"{report['outputs']} outputs ({report['seeds']} seed(s)), {report['elapsed_s']:.0f} s",
              f"{'':12}{'outputs':>8}  {'failing ≥ half of checks → ok':>30}  "
-             f"{'passing all checks → failed':>28}  verdicts ok/correct/not_covered/failed"]
+             f"{'passing all checks → failed':>28}  verdicts ok/unconfirmed/correct/not_covered/failed"]
     for name, t in report["table"].items():
         v = t["verdicts"]
         lines.append(f"{name:12}{t['outputs']:>8}  {pct(t['bad_ok'], t['bad']):>30}  "
                      f"{pct(t['good_failed'], t['good']):>28}  "
-                     f"{v['ok']}/{v['correct']}/{v['not_covered']}/{v['failed']}")
+                     f"{v['ok']}/{v['unconfirmed']}/{v['correct']}/{v['not_covered']}/{v['failed']}")
     return "\n".join(lines)

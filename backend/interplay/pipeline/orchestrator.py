@@ -82,6 +82,20 @@ def default_evaluator():
         return None
 
 
+@lru_cache(maxsize=1)
+def default_pair_evaluator():
+    """The pair evaluator when its weights load, else None: with its calibration it judges two
+    people's segments the one-person evaluator cannot (`review.judge`)."""
+    from interplay.review.pair_evaluator import DEFAULT_DIR, load_pair_evaluator
+    if not (DEFAULT_DIR / "motion_encoder.onnx").is_file():
+        return None
+    try:
+        return load_pair_evaluator()
+    except Exception as exc:   # broken or foreign files: review without it
+        log.warning("pair evaluator weights did not load: %s", exc)
+        return None
+
+
 def _realign(joints: np.ndarray, old: np.ndarray, b: int) -> np.ndarray:
     """Frames b: of `joints` moved rigidly (yaw about Y + XZ shift) so that they continue from
     joints[b-1] the way they continued from old[b-1]."""
@@ -262,7 +276,9 @@ def _review_segment(generator: Generator, source: SegmentSource, seg: Generation
     out = correct(seg, window, apply, evaluator=evaluator, rounds=cfg.rounds,
                   tolerance=cfg.tolerance, seed=seed, emit=emit, resolved=resolved,
                   free_ends=(i == 0, last), asked=asked_of(seg) if source.persons == 1 else None,
-                  pair_checked=pair_checked)
+                  pair_checked=pair_checked,
+                  pair_evaluator=default_pair_evaluator() if evaluator is not None
+                  and source.persons == 2 else None)
     applied = [e for e in out.corrections if e["score_after"] is not None]
     redrawn = [c for c, e in zip(calls, applied) if e["accepted"] and c is not None]
     if redrawn:

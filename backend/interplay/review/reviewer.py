@@ -22,21 +22,26 @@ cannot run that kind (e.g. part edits without SPAM)."""
 from __future__ import annotations
 
 import re
-from dataclasses import asdict, dataclass, field
+from dataclasses import replace
 from typing import Any, Callable
 
 import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.captions import PARTS, summarise
-from interplay.motion.pair.resolve import resolve_pair
 from interplay.motion.posecodes import caption_clip
 from interplay.planner.schema import Segment
 from interplay.review import asked as asked_checks
-from interplay.review.agreement import BODY_CUES, caption_agreement, confirms
-from interplay.review.checks import Checks, commonsense, contact_mode, worse
+from interplay.review.agreement import BODY_CUES, confirms
+from interplay.review.checks import Checks, commonsense, worse
 from interplay.review.evaluator import Evaluator
+from interplay.review.judge import WORDS, judge, not_covered
+from interplay.review.records import Corrected, Review, Verdict
+from interplay.review.resolution import better, resolution_words, resolve_people
 from interplay.text.encoder import Encoder
+
+__all__ = ["CannotApply", "Corrected", "RESOLVE", "Review", "correct", "resolution_words",
+           "resolve_people", "review"]
 
 PLAN_PART = {"left_arm": "left_upper", "right_arm": "right_upper",
              "left_leg": "left_lower", "right_leg": "right_lower"}
@@ -48,37 +53,6 @@ SCORE_EPS = 1e-6
 
 class CannotApply(RuntimeError):
     """The generator cannot run this instruction (the message says why)."""
-
-
-@dataclass
-class Review:
-    segment: int
-    round: int
-    captions: dict                 # part → caption text (person 0), parts as in motion.captions
-    summary: str
-    score: float
-    score_kind: str                # "evaluator" | "caption_agreement"
-    confirmed: dict                # planned part → bool
-    body_confirmed: bool | None    # None: the base has no cue to check
-    checks: dict
-    instructions: list = field(default_factory=list)
-    verdict: str = "ok"            # "ok" | "correct"
-    person_captions: list = field(default_factory=list)
-
-    @property
-    def metrics(self) -> dict:
-        return self.checks["metrics"]
-
-    def event(self) -> dict:
-        """The job stream's `review` event."""
-        return {"type": "review", "segment": self.segment, "round": self.round,
-                "captions": self.captions, "summary": self.summary, "score": self.score,
-                "score_kind": self.score_kind, "confirmed": self.confirmed,
-                "checks": self.checks, "instructions": self.instructions,
-                "verdict": self.verdict}
-
-    def to_json(self) -> dict:
-        return asdict(self)
 
 
 def part_captions(joints: np.ndarray) -> tuple[dict[str, list[str]], str]:
@@ -98,7 +72,8 @@ def _texts(seg: Segment, persons: int) -> list[str]:
 
 def review(seg: Segment, joints, evaluator: Evaluator | None = None,
            encoder: Encoder | None = None, round: int = 0, resolved: bool = False,
-           asked: list[dict] | None = None, pair_checked: bool = False) -> Review:
+           asked: list[dict] | None = None, pair_checked: bool = False,
+           pair_evaluator: Evaluator | None = None, final: bool = False) -> Review:
     """Review one planned segment: `joints` one (T, 22, 3) array per person for the segment's
     frames (T ≥ 3). `resolved`: the penetration resolution has already run on these frames
     (then a pair still over the bound is re-generated rather than resolved again). `asked`:
@@ -106,7 +81,11 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
     segment and asks for it again. `pair_checked`: two people whose interaction the
     pipeline judges by its pair checks on the whole motion (`pipeline.pair_review`); their
     part edits ("shakes hands", "hugs") are then not judged by one person's captions, which
-    have no words for them."""
+    have no words for them. The evaluator's score (the pair evaluator's for two people, when
+    given and the text is one it knows) under its calibrated threshold fails the segment and
+    asks for it again (`review.judge`). A segment the generator could only show the nearest
+    thing for (`coverage.how == "nearest"`) is `not_covered`, never `ok`. `final`: no
+    correction follows, so a segment still failing is `failed`, not `correct`."""
     people = [np.asarray(p, dtype=np.float64) for p in joints]
     if not people or any(p.ndim != 3 or p.shape[1:] != (sk.NUM_JOINTS, 3) for p in people):
         raise ValueError(f"joints must be one (T, 22, 3) array per person, got "
@@ -116,13 +95,11 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
         encoder = get_encoder()
     captioned = [part_captions(p) for p in people]
     texts = _texts(seg, len(people))
-    if evaluator is not None:
-        score = float(np.mean([evaluator.score(p, t) for p, t in zip(people, texts)]))
-        kind = "evaluator"
-    else:
-        score = float(np.mean([caption_agreement(s, t, encoder)
-                               for (_, s), t in zip(captioned, texts)]))
-        kind = "caption_agreement"
+    judged = judge(people, seg.prompt, texts, [s for _, s in captioned], evaluator,
+                   pair_evaluator, encoder, base=seg.base if seg.edits.named() else None,
+                   vouched=getattr(getattr(seg, "coverage", None), "how", None)
+                   in ("capture", "primitive", "composed"))
+    score, kind = judged.score, judged.kind
     parts0, summary0 = captioned[0]
     edits = {} if pair_checked and len(people) == 2 else seg.edits.named()
     confirmed: dict[str, bool] = {}
@@ -145,8 +122,17 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
     missed = asked_checks.missed(people, asked)
     for name, why in missed:
         checks.failed[f"asked_{name}"] = why
+    if judged.failure:
+        checks.failed[WORDS] = judged.failure
+    uncovered = not_covered(seg)
+    if uncovered:
+        checks.failed["not_covered"] = uncovered
     regenerate = None
-    if body_ok is False:
+    if uncovered:       # nothing to re-draw it from: said, not corrected
+        instructions = []
+    elif judged.failure:
+        regenerate = judged.failure + (" (" + "; ".join(w for _, w in missed) + ")" if missed else "")
+    elif body_ok is False:
         regenerate = (f"the plan says '{base}', the body caption says "
                       f"'{'; '.join(parts0['body'])}'")
     elif body_ok is None and kind == "caption_agreement" and score < REGENERATE_SCORE:
@@ -159,95 +145,83 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
         regenerate = "the motion does not do what was asked: " + "; ".join(w for _, w in missed)
     if regenerate:
         instructions = [{"kind": "regenerate", "prompt": seg.prompt, "reason": regenerate}]
-    else:
+    elif not uncovered:
         if "interpenetration" in checks.failed:
             instructions.insert(0, {"kind": RESOLVE, "reason": checks.failed["interpenetration"]})
         instructions += [{"kind": "inbetween", "frames": [a, b], "prompt": seg.prompt,
                           "reason": f"{r} in frames {a}–{b}"} for a, b, r in checks.windows]
     instructions = instructions[:MAX_INSTRUCTIONS]
+    # one person's words the calibrated judge could not judge: not failed, not confirmed
+    unjudged = (len(people) == 1 and judged.threshold is None
+                and getattr(evaluator, "calibration", None) is not None)
+    checked = checks.to_json()
+    if unjudged:
+        checked["unconfirmed"] = (f"the evaluator's calibration does not hold for "
+                                  f"'{judged.text}': its score {score:.2f} was not judged")
+    verdict: Verdict = ("not_covered" if uncovered
+                        else ("unconfirmed" if unjudged else "ok") if not instructions
+                        else "failed" if final and still_failing(checks.failed, instructions)
+                        else "correct")
     return Review(segment=seg.index, round=round,
                   captions={p: "; ".join(v) for p, v in parts0.items()}, summary=summary0,
                   score=round_(score), score_kind=kind, confirmed=confirmed,
-                  body_confirmed=body_ok, checks=checks.to_json(), instructions=instructions,
-                  verdict="correct" if instructions else "ok",
-                  person_captions=[s for _, s in captioned])
+                  body_confirmed=body_ok, checks=checked, instructions=instructions,
+                  verdict=verdict, person_captions=[s for _, s in captioned],
+                  threshold=judged.threshold, confidence=judged.confidence)
+
+
+WORDS_FAIL = (WORDS, "missing_contact", "interpenetration")     # and every asked_<check>
+
+
+def still_failing(failed: dict, instructions: list[dict]) -> bool:
+    """A segment with nothing more to try fails when it still misses what its words ask: the
+    judge's threshold, an asked check, a touch, the penetration bound, or a body caption that
+    contradicts them (its re-draw is still asked for). One left only with polish (part edits
+    its captions do not show, in-betweens over bad-frame runs) stays `correct`: not `ok`,
+    but not contradicted either."""
+    return any(k in WORDS_FAIL or k.startswith("asked_") for k in failed) \
+        or any(i["kind"] in ("regenerate", RESOLVE) for i in instructions)
 
 
 def round_(x: float) -> float:
     return float(np.round(x, 4))
 
 
-@dataclass
-class Corrected:
-    people: list                   # final joints per person (segment frames)
-    reviews: list                  # Review per round (round 0 = before any correction)
-    corrections: list              # correction events (dicts)
-
-    @property
-    def first(self) -> Review:
-        return self.reviews[0]
-
-    @property
-    def last(self) -> Review:
-        return self.reviews[-1]
-
-    def history(self) -> dict:
-        return {"reviews": [r.to_json() for r in self.reviews], "corrections": self.corrections}
-
-
-def resolve_people(seg: Segment, people: list[np.ndarray],
-                   free_ends: tuple[bool, bool] = (True, True)) -> tuple[list[np.ndarray], dict]:
-    """Two people with their penetration resolved under the contact `seg`'s text asks for
-    (`motion.pair.resolve.resolve_pair`; unchanged within the bound), and the report."""
-    a, b, report = resolve_pair(people[0], people[1], contact_mode(seg.prompt), *free_ends)
-    return [a, b], report
-
-
-def resolution_words(report: dict) -> str:
-    """What a resolution did, for a correction's reason."""
-    b, a = report["before"], report["after"]
-    return (f"moved apart by up to {report['moved_m']:.2f} m, {report['arm_frames']} arm frames "
-            f"re-solved, {report['frames']} frames changed: IF {b['if']:.2f} → {a['if']:.2f}, "
-            f"any overlap {b['if_any']:.2f} → {a['if_any']:.2f}, depth {b['depth_cm']:.1f} → "
-            f"{a['depth_cm']:.1f} cm" + ("" if a["ok"] else f" (still over the bound: {a['bound']})"))
-
-
-def _better(before: dict, after: dict) -> bool:
-    """The penetration bound is met after, or none of its measures got worse and one fell."""
-    keys = ("if", "if_any", "depth_cm")
-    return after["ok"] or (all(after[k] <= before[k] for k in keys)
-                           and any(after[k] < before[k] for k in keys))
-
-
 def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None = None,
             rounds: int = 2, tolerance: float = 0.1, seed: int = 0, encoder: Encoder | None = None,
             emit: Callable[[dict], None] | None = None, resolved: bool = False,
             free_ends: tuple[bool, bool] = (True, True), asked: list[dict] | None = None,
-            pair_checked: bool = False) -> Corrected:
+            pair_checked: bool = False, pair_evaluator: Evaluator | None = None) -> Corrected:
     """Algorithm 1's self-correction loop on one segment: review, run the instructions through
     `apply`, at most `rounds` rounds. A correction is kept only if the score does not drop and
     no watched metric gets worse beyond `tolerance`; otherwise the previous motion is kept and
-    the loop stops. `emit` receives the review and correction events.
+    the loop stops, except after a rejected re-draw (`regenerate`), which is tried again with
+    another seed in the next round (the best draw so far is kept). A segment still failing
+    when the loop ends (`still_failing`) gets a last review with verdict `failed` (its checks
+    say why), never `ok`. `emit` receives the review and correction events. The last review's calibrated
+    confidence goes into the segment's `coverage.confidence` when it has a coverage.
 
     Two people: `resolve_penetration` is run here (`resolve_people`, the segment's edges free
     or eased as `free_ends` says) and kept when it meets the penetration bound or lowers it
     (bones cannot change: rigid moves and IK); whatever `apply` returns for two people is
     resolved before it is reviewed. `resolved`: the frames given were resolved already.
     `asked` (`review.asked`): a correction that passes more of these checks is kept unless it
-    makes a watched metric worse; one that passes fewer is rejected."""
+    makes a watched metric worse; one that passes fewer is rejected. One that newly passes the
+    judge's threshold is kept unless a check fails that passed before (its metrics may move)."""
     if rounds < 0:
         raise ValueError(f"rounds must be ≥ 0, got {rounds}")
     emit = emit or (lambda e: None)
     people = [np.asarray(p, dtype=np.float64) for p in joints]
-    current = review(seg, people, evaluator, encoder, round=0, resolved=resolved, asked=asked,
-                     pair_checked=pair_checked)
+    kw: dict[str, Any] = dict(evaluator=evaluator, encoder=encoder, asked=asked, pair_checked=pair_checked,
+              pair_evaluator=pair_evaluator)
+    current = review(seg, people, round=0, resolved=resolved, final=rounds == 0, **kw)
     emit(current.event())
-    reviews, corrections, stop = [current], [], False
+    reviews, corrections, stop, last_round = [current], [], False, 0
     rng = np.random.default_rng([seed % 2**63, seg.index])
     for r in range(1, rounds + 1):
-        if current.verdict == "ok" or stop:
+        if current.verdict != "correct" or stop:
             break
-        changed = False
+        changed, again, last_round = False, False, r
         for instr in current.instructions:
             event = {"type": "correction", "segment": current.segment, "round": r,
                      "instruction": instr, "accepted": False, "score_before": current.score,
@@ -266,15 +240,19 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 emit(event)
                 continue
             two = len(candidate) == 2
-            after = review(seg, candidate, evaluator, encoder, round=r, resolved=resolved or two,
-                           asked=asked, pair_checked=pair_checked)
+            after = review(seg, candidate, round=r, resolved=resolved or two,
+                           final=r == rounds, **kw)
             event["score_after"] = after.score
             if report is not None:
                 # a physical fix: kept when the bound is met or lower, whatever the text score
-                ok = _better(report["before"], report["after"])
+                ok = better(report["before"], report["after"])
                 event["reason"] = resolution_words(report)
             else:
                 worse_keys = worse(current.metrics, after.metrics, tolerance)
+                if WORDS in current.checks["failed"] and WORDS not in after.checks["failed"]:
+                    # it now shows its words: a watched metric may move (a jump floats)
+                    # as long as no check fails that passed before
+                    worse_keys = sorted(set(after.checks["failed"]) - set(current.checks["failed"]))
                 gain = asked_checks.passed(candidate, asked) - asked_checks.passed(people, asked)
                 ok = not worse_keys and (gain > 0 or gain == 0
                                          and after.score + SCORE_EPS >= current.score)
@@ -286,6 +264,8 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
                 event["accepted"] = True
                 people = [np.asarray(p, np.float64) for p in candidate]
                 current, changed, resolved = after, True, resolved or two
+            elif instr["kind"] == "regenerate":
+                again = True            # another draw next round; this one is not kept
             else:
                 stop = True
             corrections.append(event)
@@ -293,9 +273,18 @@ def correct(seg: Segment, joints, apply: Callable, evaluator: Evaluator | None =
             if stop:
                 break
         if not changed:
+            if again:
+                continue
             break
-        current = review(seg, people, evaluator, encoder, round=r, resolved=resolved, asked=asked,
-                     pair_checked=pair_checked)
+        current = review(seg, people, round=r, resolved=resolved, final=r == rounds, **kw)
         emit(current.event())
         reviews.append(current)
+    if current.verdict == "correct" and still_failing(current.checks["failed"],
+                                                      current.instructions):
+        current = replace(current, round=last_round, verdict="failed")
+        emit(current.event())
+        reviews.append(current)
+    cov = getattr(seg, "coverage", None)
+    if cov is not None and current.confidence is not None:
+        cov.confidence = current.confidence
     return Corrected(people=people, reviews=reviews, corrections=corrections)

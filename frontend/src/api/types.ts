@@ -193,7 +193,7 @@ export type StreamEvent =
       confirmed: Record<string, boolean>;
       checks: Record<string, unknown>;
       instructions: Instruction[];
-      verdict: "ok" | "correct" | "failed" | "not_covered" | string;
+      verdict: "ok" | "correct" | "failed" | "not_covered" | "unconfirmed" | string;
     }
   | {
       type: "correction";
