@@ -73,3 +73,16 @@ def test_head_edit_from_words(bases, words, primitive, count):
 def test_head_edit_refuses_other_parts_words(bases):
     with pytest.raises(ValueError, match="head"):
         head_edit(bases["standing"], "kick with the right leg", None, get_encoder())
+
+
+def test_look_at_the_partner_turns_towards_them(bases):
+    from interplay.generators.primitives.registry import PRIMITIVES, build
+    base = bases["standing"]
+    for sign in (1.0, -1.0):                      # a partner ahead on the left, then the right
+        partner = base.copy()
+        partner[..., 0] += sign * 1.5
+        partner[..., 2] += 1.5
+        out = build(PRIMITIVES["look_at_partner"], {"partner": partner}, base=base)
+        yaw = pitch_yaw(out)[1] - pitch_yaw(base)[1]
+        assert sign * yaw[40:60].min() > 25
+        assert np.array_equal(out[:, OTHERS], base[:, OTHERS])

@@ -105,12 +105,14 @@ def find(text: str, encoder: Encoder, names: tuple[str, ...] | None = None
 def build(prim: Primitive, params: dict, base: np.ndarray | None = None) -> np.ndarray:
     """The primitive's joints (T, 22, 3): on `base` when given, else on its posture held for
     params["seconds"] (default: its cycles' length). params: count, seconds, side, seat_m,
-    and any of the builder's own keyword arguments (they override the table's)."""
+    partner (the other person's joints, for "look at the partner"), and any of the builder's
+    own keyword arguments (they override the table's)."""
     p = dict(params)
     count = int(p.pop("count", 2 if prim.counts else 1) or 1)
     seconds = float(p.pop("seconds", 0) or prim.default_seconds(count))
     seat = p.pop("seat_m", None)
     side = p.pop("side", None)
+    partner = p.pop("partner", None)          # the other person's joints (T, 22, 3), if any
     if base is None:
         kw = {"seat_m": seat} if seat is not None else {}
         base = posture(prim.posture, seconds, **kw)
@@ -119,7 +121,9 @@ def build(prim: Primitive, params: dict, base: np.ndarray | None = None) -> np.n
         args["side"] = side
     if prim.builder == "head":
         if args.get("action") == "look_at" and "point" not in args:
-            args["point"] = base[:, sk.NECK] + PARTNER_AHEAD_M * axes(base)[2]
+            args["point"] = (np.asarray(partner, dtype=np.float64)[:len(base), sk.HEAD]
+                             if partner is not None
+                             else base[:, sk.NECK] + PARTNER_AHEAD_M * axes(base)[2])
         if prim.counts:
             args["count"] = count
         return BUILDERS["head"](base, **args)
