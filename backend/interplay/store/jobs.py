@@ -195,6 +195,16 @@ class JobStore:
             return [_record(r) for r in session.scalars(
                 select(JobRow).where(JobRow.state.in_(ACTIVE)).order_by(JobRow.created_at))]
 
+    def for_client(self, client_id: str, limit: int = 20, scan: int = 500) -> list[JobRecord]:
+        """The generate and react jobs `client_id` asked for that made no motion (yet): queued,
+        running, failed or cancelled, newest first (among the newest `scan` such jobs)."""
+        with Session(self.engine) as session:
+            rows = session.scalars(
+                select(JobRow).where(JobRow.state != "done", JobRow.kind.in_(("generate", "react")))
+                .order_by(JobRow.created_at.desc()).limit(scan))
+            out = [_record(r) for r in rows if (r.spec or {}).get("client_id") == client_id]
+        return out[:limit]
+
     def recent_run_seconds(self, limit: int = 20) -> list[float]:
         """How long the last `limit` finished jobs ran (start to finish), newest first."""
         with Session(self.engine) as session:

@@ -1,6 +1,6 @@
 // Typed REST client for the studio API. Every non-2xx answer becomes an ApiError
 // carrying the server's readable `detail` message.
-import type { EditRequest, ExportFormat, JobCreated, JobRequest, JobStatus, Motion, MotionListItem, MotionPage, ReactRequest, Skeleton, Version } from "./types";
+import type { ClientJob, EditRequest, ExportFormat, JobCreated, JobRequest, JobStatus, Motion, MotionListItem, MotionPage, ReactRequest, Skeleton, Version } from "./types";
 import { CLIENT_HEADER, clientId } from "./clientId";
 
 export class ApiError extends Error {
@@ -66,6 +66,12 @@ export function getJob(jobId: string): Promise<JobStatus> {
 }
 
 /** The motions this browser made, newest first (at most `limit`, 1–50). */
+/** This browser's generations that made no motion yet (queued, running, failed, cancelled). */
+export async function listJobs(limit = 10): Promise<ClientJob[]> {
+  const q = new URLSearchParams({ client: clientId(), limit: String(limit) });
+  return (await request<{ jobs: ClientJob[] }>(`/api/jobs?${q}`)).jobs;
+}
+
 export async function listMotions(limit = 20): Promise<MotionListItem[]> {
   return (await listMotionPage(limit)).motions;
 }

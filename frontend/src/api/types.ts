@@ -74,6 +74,23 @@ export interface MotionPage {
   total: number;
 }
 
+/** One of this browser's generations that made no motion (yet): GET /api/jobs?client=…. */
+export interface ClientJob {
+  job_id: string;
+  motion_id: string;
+  status: "queued" | "running" | "failed" | "cancelled";
+  reason: string | null;
+  attempts: number;
+  mode: string;
+  prompt: string | null;
+  persons: number;
+  seconds: number;
+  created_at: string | null;
+  stream: string;
+  /** The body to POST /api/jobs again (Retry). */
+  request: Record<string, unknown>;
+}
+
 /** GET /api/jobs/{id}. */
 export interface JobStatus {
   job_id: string;

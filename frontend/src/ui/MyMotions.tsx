@@ -5,6 +5,7 @@ import { loadMore, refreshLibrary, thisLibraryLink, useLibrary } from "../librar
 import { openMotion, showInUrl } from "../studio";
 import { useStudio } from "../store";
 import { ago, thumbnail } from "./thumbnail";
+import { MyJobs } from "./MyJobs";
 
 const PERSON_COLOURS = ["var(--accent-2)", "#f0b45b"];
 
@@ -94,6 +95,7 @@ export function MyMotions() {
               {lib.notice}
             </p>
           )}
+          <MyJobs />
           {lib.error && <p className="small warn">Could not load your motions: {lib.error}</p>}
           {lib.loaded && !lib.items.length && !lib.error && (
             <p className="muted small" data-testid="library-empty">

@@ -1,16 +1,20 @@
 """POST /api/jobs (start a generation), GET /api/jobs/{id} (its status), DELETE /api/jobs/{id}
-(cancel it). Jobs are durable (`api/jobs.py`): admitted by the database (429 with Retry-After
+(cancel it), GET /api/jobs?client=<id> (a browser's generations that made no motion yet). Jobs are durable (`api/jobs.py`): admitted by the database (429 with Retry-After
 when full), run by this process's worker threads or by `interplay worker` processes."""
 
 from __future__ import annotations
 
-from fastapi import APIRouter, HTTPException, Request
+from typing import Annotated
+
+from fastapi import APIRouter, HTTPException, Query, Request
+from pydantic import BaseModel, Field
 
 from interplay.api.deps import ClientDep, JobsDep, RepoDep
 from interplay.api.deps import generator as loaded_generator
 from interplay.api.jobs import JobSpec, QueueFull, Unavailable
 from interplay.api.schemas import ERRORS, JobCancelled, JobCreate, JobCreated, JobStatus
 from interplay.generators.base import random_seed
+from interplay.store.models import ID_PATTERN
 
 router = APIRouter(prefix="/api/jobs", tags=["jobs"])
 
@@ -47,6 +51,50 @@ def create_job(body: JobCreate, jobs: JobsDep, repo: RepoDep, request: Request,
     except Unavailable as exc:
         raise HTTPException(503, str(exc)) from None
     return JobCreated(job_id=job.id, motion_id=job.motion_id, stream=stream_path(job.id), seed=seed)
+
+
+class ClientJob(BaseModel):
+    job_id: str
+    motion_id: str
+    status: str
+    reason: str | None
+    attempts: int
+    mode: str
+    prompt: str | None
+    persons: int
+    seconds: float
+    created_at: str | None
+    stream: str
+    request: dict = Field(description="The body to POST /api/jobs again (Retry).")
+
+
+class ClientJobs(BaseModel):
+    jobs: list[ClientJob]
+
+
+def _retry_body(spec: dict) -> dict:
+    if spec.get("mode") == "react":
+        return {k: v for k, v in {"mode": "react", "actor_motion_id": spec.get("actor_motion_id"),
+                                  "prompt": spec.get("prompt"), "seed": spec.get("seed")}.items()
+                if v is not None}
+    body = {k: spec.get(k) for k in ("prompt", "persons", "seconds", "seed", "trajectory")}
+    return {k: v for k, v in body.items() if v is not None}
+
+
+@router.get("", response_model=ClientJobs, responses=ERRORS)
+def my_jobs(jobs: JobsDep,
+            client: Annotated[str, Query(pattern=ID_PATTERN, description="The browser's client "
+                                         "id (the X-Interplay-Client it sends).")],
+            limit: Annotated[int, Query(ge=1, le=50)] = 20) -> ClientJobs:
+    """This browser's generations that made no motion (yet): queued, running, failed or
+    cancelled, newest first, each with the request to send again (My motions' Retry)."""
+    return ClientJobs(jobs=[ClientJob(
+        job_id=r.id, motion_id=r.motion_id, status=r.state, reason=r.reason, attempts=r.attempts,
+        mode=r.spec.get("mode") or r.kind, prompt=r.spec.get("prompt"),
+        persons=int(r.spec.get("persons") or 1), seconds=float(r.spec.get("seconds") or 0),
+        created_at=r.created_at.isoformat() if r.created_at else None,
+        stream=stream_path(r.id), request=_retry_body(r.spec))
+        for r in jobs.store.for_client(client, limit)])
 
 
 @router.get("/{job_id}", response_model=JobStatus, responses=ERRORS)
