@@ -25,8 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
-from interplay.eval.prompts.rows import Row
-from interplay.eval.prompts.suite import CATEGORIES, Prompt
+from interplay.eval.prompts.rows import Row, edited
+from interplay.eval.prompts.suite import CATEGORIES, FRESH_CATEGORIES, Prompt, table_categories
 from interplay.generators.base import Request
 from interplay.motion.checks.named import plausibility, run_check
 from interplay.motion.motion import Motion
@@ -45,9 +45,10 @@ def t975(df: int) -> float:
     return T975[max(k for k in keys if k <= df)] if df < 30 else 1.96
 
 
-def judge(prompt: Prompt, people: list[np.ndarray]) -> dict:
-    """The prompt's checks and the plausibility checks on one output."""
-    checks = [run_check(people, spec).to_json() for spec in prompt.checks]
+def judge(prompt: Prompt, people: list[np.ndarray], base: list[np.ndarray] | None = None) -> dict:
+    """The prompt's checks and the plausibility checks on one output (for a part edit: the
+    edited motion, with the motion it was made from as `base`)."""
+    checks = [run_check(people, spec, base=base).to_json() for spec in prompt.checks]
     plaus = [r.to_json() for r in plausibility(people, start=prompt.start, contact=prompt.contact)]
     return {"checks": checks, "plausibility": plaus,
             "passed": sum(c["passed"] for c in checks), "total": len(checks),
@@ -77,7 +78,11 @@ def run(rows: list[Row], prompts: list[Prompt], seeds: int = 3, out: Path | None
                 t = time.monotonic()
                 try:
                     people, plan = row.make(req)
-                    verdict = judge(prompt, people)
+                    base = None
+                    if prompt.edit is not None:    # the studio's edit of the base motion
+                        base = people
+                        people, plan = edited(row, prompt.prompt, people, plan, prompt.edit, seed)
+                    verdict = judge(prompt, people, base)
                 except Exception as exc:       # a crash is a failed output, reported as such
                     people, plan, verdict = None, {}, _error_result(prompt, exc)
                 rec = {"row": row.name, "id": prompt.id, "category": prompt.category,
@@ -126,7 +131,7 @@ def table(results: list[dict], rows: list[Row], prompts: list[Prompt], seeds: in
     for row in rows:
         mine = [r for r in results if r["row"] == row.name]
         cells: dict = {}
-        for cat in CATEGORIES:
+        for cat in table_categories(prompts):
             cells[cat] = _rate([r for r in mine if r["category"] == cat], seeds)
         cells["one_person"] = _rate([r for r in mine if r["persons"] == 1], seeds)
         cells["two_person_all"] = _rate([r for r in mine if r["persons"] == 2], seeds)
@@ -165,8 +170,9 @@ def format_table(report: dict, markdown: bool = False) -> str:
             f"({report['one_person_prompts']} one-person, {report['two_person_prompts']} two-person) "
             f"· seeds {report['seeds']} · share of checks passed, mean ± 95 % CI over seeds"]
     cols = ["category", "prompts"] + names
-    lines = [[label, str(report["categories"].get(cat, ""))] + [_cell(t[n][cat]) for n in names]
-             for cat, label in CATEGORIES.items()]
+    labels = {**CATEGORIES, **FRESH_CATEGORIES}
+    lines = [[labels[cat], str(count)] + [_cell(t[n].get(cat)) for n in names]
+             for cat, count in report["categories"].items()]
     lines += [[label, ""] + [_cell(t[n][key], kind) for n in names] for key, label, kind in SUMMARY]
     if markdown:
         body = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
@@ -199,7 +205,7 @@ def build_report(rows: list[Row], skipped: dict, prompts: list[Prompt], results:
     return {"split": split, "seeds": seeds, "prompts": len(prompts), "data": data or {},
             "one_person_prompts": sum(p.persons == 1 for p in prompts),
             "two_person_prompts": sum(p.persons == 2 for p in prompts),
-            "categories": {c: sum(p.category == c for p in prompts) for c in CATEGORIES},
+            "categories": {c: sum(p.category == c for p in prompts) for c in table_categories(prompts)},
             "rows": {r.name: r.about for r in rows}, "skipped": skipped,
             "elapsed_s": round(elapsed_s, 1),
             "table": table(results, rows, prompts, seeds)}

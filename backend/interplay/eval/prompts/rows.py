@@ -15,12 +15,18 @@ people (one (T, 22, 3) array each) and the plan it made:
 
 Rows are built from the generator the settings name (`load_generator`); a row whose model
 did not load is skipped with the router's reason.
+
+A part edit (the fresh split's `"edit"` prompts) is made on every row's base motion the way the
+studio makes it: `pipeline.editing.edit_joints` with the server's generator, the router (the
+studio edits whatever motion it holds with that one). An edit it cannot make raises, and the
+benchmark records the prompt's checks as failed with the reason.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -30,6 +36,7 @@ from interplay.generators.interaction.generator import InteractionGenerator
 from interplay.generators.retrieve_edit.generator import RetrieveEditGenerator
 from interplay.generators.router import Router, load_generator
 from interplay.generators.spam.generator import SpamGenerator
+from interplay.pipeline.editing import edit_joints
 from interplay.pipeline.orchestrator import default_evaluator, orchestrate
 from interplay.settings import Settings
 
@@ -43,6 +50,7 @@ class Row:
     persons: tuple[int, ...]        # the prompts it can serve
     make: Make
     about: str
+    editor: Any = None              # the generator part edits are made with (the router)
 
 
 def _plain(gen) -> Make:
@@ -61,6 +69,17 @@ def _pipeline(router: Router) -> Make:
     return make
 
 
+def edited(row: Row, prompt: str, people: list[np.ndarray], plan: dict, edit: dict,
+           seed: int) -> tuple[list[np.ndarray], dict]:
+    """(people, plan) after the studio's edit of `edit["part"]` from `edit["text"]` over the
+    whole motion, made on `people` (the base motion of `prompt`) by the row's editor."""
+    if row.editor is None:
+        raise ValueError(f"row {row.name} has no editor for part edits")
+    joints, plan, _, _ = edit_joints(row.editor, people, plan, prompt, edit["part"],
+                                     edit["text"], None, seed)
+    return [np.asarray(joints, dtype=np.float64)], plan
+
+
 def load_rows(names=ROW_NAMES, settings: Settings | None = None
               ) -> tuple[list[Row], dict[str, str]]:
     """(the rows that load, {row: why skipped})."""
@@ -72,25 +91,25 @@ def load_rows(names=ROW_NAMES, settings: Settings | None = None
     for name in names:
         if name == "retrieval":
             rows.append(Row(name, (1, 2), _plain(router.retrieval),
-                            "retrieval alone over the processed captures"))
+                            "retrieval alone over the processed captures", router))
         elif name == "retrieve_edit":
             rows.append(Row(name, (1, 2), _plain(RetrieveEditGenerator(router.index)),
-                            "retrieval + arm actions by IK + floor pass"))
+                            "retrieval + arm actions by IK + floor pass", router))
         elif name == "compose":
             rows.append(Row(name, (2,), _plain(InteractionGenerator(router.index)),
-                            "interaction by composition alone (two people)"))
+                            "interaction by composition alone (two people)", router))
         elif name == "spam":
             if router.spam is None:
                 skipped[name] = router.reason or "SPAM is not loaded"
                 continue
-            rows.append(Row(name, (1,), _plain(SpamGenerator(router.spam)), "SPAM alone"))
+            rows.append(Row(name, (1,), _plain(SpamGenerator(router.spam)), "SPAM alone", router))
         elif name == "coda":
             if router.coda is None:
                 skipped[name] = router.coda_reason or "CODA is not loaded"
                 continue
-            rows.append(Row(name, (2,), _plain(CodaGenerator(router.coda)), "CODA alone"))
+            rows.append(Row(name, (2,), _plain(CodaGenerator(router.coda)), "CODA alone", router))
         else:
             rows.append(Row(name, (1, 2), _pipeline(router),
                             "the router (retrieve_edit) through plan → generate → review → "
-                            "trajectory"))
+                            "trajectory", router))
     return rows, skipped

@@ -4,6 +4,12 @@ Each prompt: id, split ("dev" to tune on, "test" to report), category, prompt (a
 it), persons, seconds, start (the posture of its first frame: "standing", "lying", "sitting",
 … or "any"), contact (whether the two people are asked to touch) and checks, each
 `{"check": name, …parameters}` naming a check of `interplay.motion.checks.named.CHECKS`.
+
+The `fresh` split lives in its own file (`eval/data/fresh_prompts.json`, `load_split("fresh")`):
+prompts written in words the code has no table for (`vocabulary.py`), one-person, two-person
+and part edits. A part edit's entry has `"edit": {"part": …, "text": …}`: the prompt is the
+base motion, the text is what the user types into the studio's edit of that part, and its
+checks may compare the edited motion with the base (`Spec.base`).
 """
 
 from __future__ import annotations
@@ -15,7 +21,8 @@ from pathlib import Path
 from interplay.motion.checks.named import CHECKS
 
 SUITE = Path(__file__).resolve().parents[1] / "data" / "prompts.json"
-SPLITS = ("dev", "test")
+FRESH = SUITE.with_name("fresh_prompts.json")
+SPLITS = ("dev", "test", "fresh")
 # Table order; the names as the table prints them.
 CATEGORIES: dict[str, str] = {
     "single": "single actions",
@@ -30,6 +37,8 @@ CATEGORIES: dict[str, str] = {
     "paths": "named paths",
     "two_person": "two-person interactions",
 }
+# Categories only the fresh split has (the dev / test tables keep theirs).
+FRESH_CATEGORIES: dict[str, str] = {"edits": "part edits"}
 STARTS = ("standing", "any", "low", "lying", "sitting", "kneeling", "all_fours")
 
 
@@ -45,6 +54,7 @@ class Prompt:
     start: str = "standing"
     contact: bool = False
     kind: str = ""               # two-person prompts: greeting, contact, pushing, following, …
+    edit: dict | None = None     # {"part": …, "text": …}: a part edit made on the base motion
     extra: dict = field(default_factory=dict)
 
 
@@ -55,7 +65,7 @@ def _prompt(d: dict) -> Prompt:
             raise ValueError(f"{where}: missing {key!r}")
     if d["split"] not in SPLITS:
         raise ValueError(f"{where}: split must be one of {SPLITS}, got {d['split']!r}")
-    if d["category"] not in CATEGORIES:
+    if d["category"] not in CATEGORIES and d["category"] not in FRESH_CATEGORIES:
         raise ValueError(f"{where}: unknown category {d['category']!r}")
     if d["persons"] not in (1, 2):
         raise ValueError(f"{where}: persons must be 1 or 2")
@@ -67,19 +77,25 @@ def _prompt(d: dict) -> Prompt:
     checks = d["checks"]
     if not isinstance(checks, list) or not checks:
         raise ValueError(f"{where}: needs at least one check")
+    edit = d.get("edit")
+    if edit is not None and (not isinstance(edit, dict) or not isinstance(edit.get("part"), str)
+                             or not isinstance(edit.get("text"), str) or d["persons"] != 1):
+        raise ValueError(f"{where}: an edit is {{'part': str, 'text': str}} on one person")
     for c in checks:
         name = c.get("check") if isinstance(c, dict) else None
         if name not in CHECKS:
             raise ValueError(f"{where}: unknown check {name!r}")
         if CHECKS[name].persons == 2 and d["persons"] != 2:
             raise ValueError(f"{where}: {name} needs two people")
+        if CHECKS[name].base and edit is None:
+            raise ValueError(f"{where}: {name} compares an edit with its base; the prompt has no edit")
     known = {"id", "split", "category", "prompt", "persons", "seconds", "checks", "start",
-             "contact", "kind"}
+             "contact", "kind", "edit"}
     return Prompt(id=d["id"], split=d["split"], category=d["category"], prompt=d["prompt"],
                   persons=int(d["persons"]), seconds=float(d["seconds"]),
                   checks=tuple(dict(c) for c in checks), start=start,
                   contact=bool(d.get("contact", False)), kind=d.get("kind", ""),
-                  extra={k: v for k, v in d.items() if k not in known})
+                  edit=dict(edit) if edit is not None else None, extra={k: v for k, v in d.items() if k not in known})
 
 
 def load_suite(path: Path = SUITE) -> list[Prompt]:
@@ -97,3 +113,24 @@ def select(prompts: list[Prompt], split: str | None = None, categories=None,
     """The prompts of one split (None: both), optionally only some categories or ids."""
     return [p for p in prompts if (split is None or p.split == split)
             and (not categories or p.category in categories) and (not ids or p.id in ids)]
+
+
+def load_split(split: str, ids=None) -> list[Prompt]:
+    """The prompts of one split (optionally only some ids): dev and test from the suite,
+    fresh from its own file (every prompt there must be of split fresh)."""
+    if split not in SPLITS:
+        raise ValueError(f"split must be one of {SPLITS}, got {split!r}")
+    if split != "fresh":
+        return select(load_suite(), split, ids=ids)
+    prompts = load_suite(FRESH)
+    wrong = [p.id for p in prompts if p.split != "fresh"]
+    if wrong:
+        raise ValueError(f"{FRESH.name} holds prompts of other splits: {wrong}")
+    return select(prompts, "fresh", ids=ids)
+
+
+def table_categories(prompts: list[Prompt]) -> dict[str, str]:
+    """The categories a report shows: every suite category, then the fresh-only ones that
+    these prompts use."""
+    used = {p.category for p in prompts}
+    return {**CATEGORIES, **{k: v for k, v in FRESH_CATEGORIES.items() if k in used}}

@@ -22,6 +22,7 @@ import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.bodyframe import BodyFrame
+from interplay.motion.checks import contact, everyday, heads
 from interplay.motion.checks import measures as m
 from interplay.motion.signals import fill_gaps, runs, zigzag
 
@@ -95,6 +96,7 @@ class Spec:
     fn: Callable[..., tuple[bool, Any, str]]
     persons: int                       # 1: a one-person check (per person), 2: needs both
     doc: str
+    base: bool = False                 # compares an edited motion with its base (heads.AGAINST_BASE)
 
 
 CHECKS: dict[str, Spec] = {}
@@ -121,6 +123,20 @@ def _longest(mask: np.ndarray) -> float:
     """Seconds of the longest run of True (single-frame gaps filled)."""
     r = runs(fill_gaps(mask))
     return max((e - s for s, e in r), default=0) / FPS
+
+
+def against_base(fn: Callable[..., tuple[bool, Any, str]]) -> Callable[..., tuple[bool, Any, str]]:
+    CHECKS[fn.__name__] = Spec(fn, 1, (fn.__doc__ or "").strip().split("\n")[0], base=True)
+    return fn
+
+
+# The fresh split's checks of everyday actions, heads, touches and edits (their own modules).
+for _fn in everyday.SINGLE + heads.SINGLE:
+    single(_fn)
+for _fn in contact.PAIR:
+    pair(_fn)
+for _fn in heads.AGAINST_BASE:
+    against_base(_fn)
 
 
 # ---- one person: counts ----------------------------------------------------------------------
@@ -706,9 +722,11 @@ def plausibility(people: list[np.ndarray], start: str = "standing", contact: boo
 
 # ---- running a check by name --------------------------------------------------------------------
 
-def run_check(people: list[np.ndarray], spec: dict) -> Result:
+def run_check(people: list[np.ndarray], spec: dict, base: list[np.ndarray] | None = None) -> Result:
     """The check `spec["check"]` with the rest of `spec` as its parameters, on these people.
-    One-person checks: `person` 0/1, "any" (default with two people) or "both"."""
+    One-person checks: `person` 0/1, "any" (default with two people) or "both". Checks of an
+    edit (`Spec.base`) compare each person with the same person of `base`, the motion the edit
+    was made from."""
     params = dict(spec)
     name = params.pop("check")
     if name not in CHECKS:
@@ -721,11 +739,16 @@ def run_check(people: list[np.ndarray], spec: dict) -> Result:
             raise ValueError(f"{name} needs two people, got {len(people)}")
         ok, v, bound = check.fn(people[0], people[1], frames_[0], frames_[1], **params)
         return Result(name, bool(ok), v, bound, None)
+    args: list[tuple] = [(f,) for f in frames_]
+    if check.base:
+        if base is None or len(base) != len(people):
+            raise ValueError(f"{name} compares an edit with its base motion: pass base=")
+        args = [(f, m.frame_of(np.asarray(p, dtype=np.float64))) for f, p in zip(frames_, base)]
     who = params.pop("person", "any" if len(people) == 2 else 0)
     if who in ("any", "both"):
-        results = [check.fn(f, **params) for f in frames_]
+        results = [check.fn(*x, **params) for x in args]
         oks = [r[0] for r in results]
         ok = all(oks) if who == "both" else any(oks)
         return Result(name, bool(ok), [r[1] for r in results], results[0][2], who)
-    ok, v, bound = check.fn(frames_[int(who)], **params)
+    ok, v, bound = check.fn(*args[int(who)], **params)
     return Result(name, bool(ok), v, bound, int(who))
