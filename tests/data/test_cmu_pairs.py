@@ -126,3 +126,15 @@ def test_kinds_from_cmu_descriptions():
     assert pair_kind("rush up, arm wrestle (2 subjects - subject A)")[0] == "arm_wrestle"
     assert pair_kind("football - throw, catch (2 subjects - subject A)")[0] == "throw_catch"
     assert pair_kind("high-five, walk (2 subjects - subject A)")[0] == "high_five"
+
+
+def test_pairs_are_found_in_the_newer_data_layout_and_flat(raw, tmp_path):
+    """una-dinosauria's newer commits keep the subjects under data/0SS/; a flat copy works too."""
+    index = raw / "cmu-index" / "cmu_index.csv"
+    for layout in ("data/{s:03d}", "flat"):
+        root = tmp_path / layout.split("/")[0] / "copy"
+        for s in (18, 19):
+            folder = root / ("." if layout == "flat" else layout.format(s=s))
+            folder.mkdir(parents=True, exist_ok=True)
+            (folder / f"{s}_01.bvh").write_text((raw / "cmu-pairs" / f"{s:03d}" / f"{s}_01.bvh").read_text())
+        assert [c.id for c in build_cmu_pairs(root, index)] == ["cmu-pair:18_01"]

@@ -9,9 +9,10 @@ are read with `cmu_daz.load_salsa_pair` (one canonical transform for both) at CM
 
 Where the raw files come from: the BVH conversion of the whole CMU database in
 una-dinosauria/cmu-mocap (files `0SS/SS_TT.bvh`, MotionBuilder bone names, read by `cmu_daz`).
-Its snapshot (789 MB) is over what `fetch` brings, so the build reads them from
-`../shared/data/cmu-pairs/` (the same `0SS/SS_TT.bvh` or `SS/SS_TT.bvh` layout; the subjects
-above, about 100 files) or from the snapshot where a mirror holds it, and stops with a message
+Its snapshot (789 MB) is over what `fetch` brings, as is every other whole copy found (ju3tin/bvh,
+Shriinivas/cmubvh; see the data card's "Sources considered"), so the build reads them from
+`../shared/data/cmu-pairs/` (`0SS/SS_TT.bvh`, `data/0SS/SS_TT.bvh`, `SS/SS_TT.bvh` or flat; the
+subjects above, about 100 files) or from the snapshot where a mirror holds it, and stops with a message
 saying so when neither has them.
 """
 
@@ -77,8 +78,10 @@ def pair_kind(description: str) -> tuple[str, str]:
 
 
 def _trial_files(folder: Path) -> dict[tuple[int, int], Path]:
+    """`SS_TT.bvh` files at any depth under `folder`: una-dinosauria's `0SS/SS_TT.bvh` (commit
+    62ac0fb), its newer `data/0SS/SS_TT.bvh`, or one flat folder."""
     out: dict[tuple[int, int], Path] = {}
-    for path in sorted(folder.glob("*/*.bvh")):
+    for path in sorted(folder.rglob("*.bvh")):
         m = re.fullmatch(r"(\d+)_(\d+)", path.stem)
         if m:
             out[int(m.group(1)), int(m.group(2))] = path
