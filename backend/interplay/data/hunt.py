@@ -17,6 +17,11 @@ everyday gestures and chores, emotions/styles and real two-person interaction be
 | LeeChunHei/CMU-Mocap-for-AMP-ASE (2,170 CMU trials retargeted to the AMP humanoid, .npy) | CMU, all subjects | CMU terms (no licence file of its own) | as CMU | not ingested: snapshot 779 MB, over the fetch limit |
 | Przestr/motion-capture, beemsoft/webxr-handtracking-playground, DragonForgedTheArtist/IClone-CMU-Mocap | CMU subsets already in ../shared/data (cmu-bvh, cmu-salsa, cmu-iclone) | CMU terms | as CMU | already in the main set; nothing new there |
 | 414Group/Rotate, a "better-endfield" motions folder, YuanchengLi-Kevin/cmu-mocap-*, cyun9601/CMU-MOCAP-Data, gpdevspace/JEPA_CMU_MoCap, ywchao/baselines, daylanKifky/CMU-Motion-Capture-Database-to-Blender | one or two CMU trials each (18_01/19_01 handshake) or only code that downloads CMU | CMU terms / none | – | nothing worth a source (a single handshake pair at most) |
+| ju3tin/bvh (`bvh/SS_TT.bvh`, 1,725 CMU trials of the MotionBuilder-friendly release, flat: 18_01, 19_01, 22_05, 140_01 … listed) | most CMU subjects, the two-person ones included | CMU terms (its README is one line; no licence seen) | as CMU | not ingested: snapshot 742,512,640 bytes (708 MiB), over the fetch limit |
+| Shriinivas/cmubvh (READMEFIRST v1.1: the 2010 MotionBuilder-friendly release, whole) | all CMU subjects | CMU terms | as CMU | not ingested: snapshot 1,075,107,840 bytes (1,025 MiB), over the fetch limit |
+| kevindaze/EndfieldAnimationImporter (`native/windows-x64/motions`: 18.asf, 19.asf, 18_01, 18_02, 19_01, 19_02.amc — the "better-endfield" folder above) | two handshake pairs in CMU's original Acclaim files | CMU terms | as CMU | not ingested: "no snapshot of that repository can be had here"; the index holds only its README |
+| xuebing0229/SullyOS (`public/room3d/motions`) | a manifest naming una-dinosauria @ 09a07f5 `data/022/22_05`, `22_07` + 23's partners and `data/013/13_17.bvh` (the BVHs themselves not committed), and `selected/cmu-18_03 … 22_17.json`: upper-body quaternion tracks retargeted onto its own rig at 30 Hz | CMU terms | as CMU | not ingested: not the capture (re-posed, upper body only), and the fetched snapshot (newest commit) holds no `room3d` folder: the commits with those files are not in it |
+| a BioMotionToolbox demo folder (Matlab, `actions/18_01.bvh` + `19_01.bvh`), Neil Lawrence's high-five notebook (CMU 20/21 fetched at run time), AMASS-based two-person loaders (`18_19_Justin`, `20_21_Justin1`, `22_23_justin` SMPL folders) | one handshake pair; download code; AMASS re-fits of the pairs | CMU terms / AMASS licence (non-commercial, no redistribution) | – / research only | nothing fetchable beyond one pair (the toolbox's repository is not named by the index); AMASS re-fits left out for their licence |
 | **Bandai Namco Research motion dataset 2** (BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @ 74ead3b) | 2,902 clips, 3 actors: walk, turns, run, wave and raise one/both hands in 7 styles (active, elderly, exhausted, feminine, masculine, normal, youthful) | CC BY-NC 4.0 | **non-commercial only**, for data and weights; attribute | **staged**: the 2,482 clips ../shared/data lacks, `models/data/staged/bandai-namco-2.npz` (opt-in, below) |
 | **ReActIdle** (Enekoassets/ReActIdle @ 90b0ac7) | 26 idle standing takes (16 acted: waiting, fidgeting, looking around; 10 genuine: unaware), one performer per id, BVH, 24 fps, 82k frames (57 min); the snapshot lacks 3 acted takes (≥ 4 MiB) | MIT (LICENSE.txt, "Copyright (c) 2025 [RSAIT]") | commercial use allowed for data and weights; keep the notice | **staged**: `models/data/staged/reactidle.npz` (quiet standing: bases for composition, idle requests) |
 | glimpse-project/glimpse-training-data | CMU's cgspeed BVH release as zip archives per subject range (`mocap/cmuconvert-mb2-*.zip`) | CMU terms | as CMU | not ingested: every archive is over 4 MiB and absent from the snapshot |
@@ -47,7 +52,7 @@ Named families after this hunt (real single-person minutes in the main set when 
 | everyday gestures and chores | 34.8 (waves, raised hands, bows, calls, traffic signals, washing) | staged: Bandai Namco 2 adds 104 min of waves and raised hands; CMU 79/80 chores (chopping, brushing teeth …): over the snapshot limit |
 | emotions and styles | 45.9 (Bandai Namco's 14 non-normal styles) | staged: Bandai Namco 2 adds 7 styles on walk/run/wave/raise (~2.5 h non-normal); CMU 142 (emotional walks): over the snapshot limit; 100STYLE (CC BY): not reachable |
 | idle / waiting | (few quiet stretches inside other clips) | staged: ReActIdle, MIT, acted and genuine idle standing |
-| real two-person beyond dance | 0 (salsa only, 14 pairs) | CMU 18–23, 33/34 (handshake, high-five, pull, pull up, comfort, pass, arm wrestle, throw-catch): over the snapshot limit; NuiSI, Bütepage: no licence; SBU, InterHuman, Inter-X, InterAct: research-only / NC-SA |
+| real two-person beyond dance | 0 (salsa only, 14 pairs) | CMU 18–23, 33/34 (handshake, high-five, pull, pull up, comfort, pass, arm wrestle, throw-catch): over the snapshot limit in every whole copy found (708–1,025 MiB), at most two pairs elsewhere; NuiSI, Bütepage: no licence; SBU, InterHuman, Inter-X, InterAct: research-only / NC-SA |
 
 What would close the gaps: CMU's own files. A copy of una-dinosauria/cmu-mocap's BVH for subjects 13–15,
 18–23, 33/34, 56, 75, 79, 80, 86, 90, 111, 113–115, 135, 137, 140–144 (exercise, boxing, climbing,
@@ -59,6 +64,18 @@ B's trials (18/19, 20/21, 22/23, 33/34) from `../shared/data/cmu-pairs/0SS/SS_TT
 interaction kind (`interplay.data.cmu_pairs.KINDS`: handshake, high-five, help up, pull, comfort, hand
 over, arm wrestle, throw-catch, walk arm in arm …) and measures its contact windows. Single-person
 subjects would need a builder like `cmu-bvh`'s over the same files (not written yet).
+
+Second pass for CMU's two-person trials (issue 25): path look-ups of CMU trial files (18_01, 19_01, 20_01,
+22_05, 33_01, 13_29, 140_01, 144_06; `.bvh` or `.amc`) at a repository's root or under `bvh/`, `data/`,
+`data/cmu/`, `cmu/`, `motions/`, `actions/`, `018/`, `18/`, `subjects/18/`, `all_asfamc/subjects/18/`;
+repository names containing cmu-mocap, cmu_mocap, cmubvh, cmu-bvh, cmu_bvh, cmuconvert, mocap-data, biomotion;
+text look-ups of 19_01.amc, 19_01.bvh, 20_01.bvh, 22_01.bvh, 22_07.bvh, 135_01.bvh, 140_04.bvh, 142_01.bvh,
+18_19_Justin, cmuconvert-mb2-1; code and pages searches for two-person CMU subsets. Every whole copy of the pairs is over the 500 MiB fetch limit
+(una-dinosauria/cmu-mocap 789 MB, ju3tin/bvh 708 MiB, LeeChunHei/CMU-Mocap-for-AMP-ASE 779 MB,
+Shriinivas/cmubvh 1,025 MiB; glimpse-project's per-range zips are absent, ≥ 4 MiB), and no repository
+that can be fetched was found with both halves of any pair, so nothing was staged (nor CMU's single-person
+families: the same copies hold them). `interplay.data.cmu_pairs` reads a copy laid out
+as una-dinosauria's `0SS/SS_TT.bvh` (commit 62ac0fb), its newer `data/0SS/SS_TT.bvh` or a flat folder.
 
 ### Staged sources (opt-in, `models/data/staged/`)
 `interplay data build --staged` reads named snapshots from `/work/.mirror` (fetch step and manifest in
