@@ -11,13 +11,10 @@ carries its seed, so the new attempt makes the same motion."""
 from __future__ import annotations
 
 import logging
-from typing import TYPE_CHECKING
+from typing import Any
 
 from interplay.api.events import ErrorEvent, RestartEvent
 from interplay.store import JobRecord
-
-if TYPE_CHECKING:
-    from interplay.api.jobs import JobManager
 
 log = logging.getLogger(__name__)
 
@@ -27,8 +24,9 @@ def died(rec: JobRecord) -> str:
     return f"the process running the job ({who}) stopped before it finished (killed, crashed or restarted)"
 
 
-def requeue_or_fail(manager: JobManager, rec: JobRecord) -> None:
-    """Handle one running orphan `rec` (its process is gone)."""
+def requeue_or_fail(manager: Any, rec: JobRecord) -> None:
+    """Handle one running orphan `rec` (its process is gone) for `manager` (an
+    `api.jobs.JobManager`, which imports this module)."""
     reason = died(rec)
     if rec.attempts < manager.max_attempts:
         if manager.role == "worker" or not manager.accepting:
