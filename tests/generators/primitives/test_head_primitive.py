@@ -83,6 +83,6 @@ def test_look_at_the_partner_turns_towards_them(bases):
         partner[..., 0] += sign * 1.5
         partner[..., 2] += 1.5
         out = build(PRIMITIVES["look_at_partner"], {"partner": partner}, base=base)
-        yaw = pitch_yaw(out)[1] - pitch_yaw(base)[1]
-        assert sign * yaw[40:60].min() > 25
+        moved = out[:, sk.HEAD, 0] - base[:, sk.HEAD, 0]          # +X is the person's left
+        assert sign * moved[20:80].min() > 0.02
         assert np.array_equal(out[:, OTHERS], base[:, OTHERS])
