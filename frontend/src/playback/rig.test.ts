@@ -156,4 +156,14 @@ describe("fitting the mesh to a person's bones", () => {
     expect(Array.from(joint)).toEqual([knee, pelvis, pelvis, wrist]);
     expect(Array.from(bone)).toEqual([ankle, rhip, pelvis, wrist]);
   });
+
+  it("keeps the chest on the trunk's bone when the joint names are given (no collar bleed)", () => {
+    const [spine3, neck, rcollar, pelvis, rhip] = ["spine3", "neck", "right_collar", "pelvis", "right_hip"].map(J);
+    const skinIndex = new Uint8Array([spine3, rcollar, 0, 0, pelvis, rhip, 0, 0]);
+    const skinWeight = new Float32Array([0.6, 0.4, 0, 0, 0.6, 0.4, 0, 0]);
+    // without names, the heaviest child: the chest vertex lies on the right collar's bone (the arm's)
+    expect(Array.from(vertexJoints(skinIndex, skinWeight, skeleton.parents).bone)).toEqual([rcollar, rhip]);
+    // with them, the trunk's (neck); the root still takes its heaviest child (the leg's)
+    expect(Array.from(vertexJoints(skinIndex, skinWeight, skeleton.parents, skeleton.joints).bone)).toEqual([neck, rhip]);
+  });
 });

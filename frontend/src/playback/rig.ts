@@ -137,16 +137,27 @@ export function fitPositions(
 
 /** Per vertex of a skinned mesh: its strongest joint (contacts glow there) and the bone it lies
  * on, named by the bone's child joint as the mannequin names its bones (part colour,
- * penetration, picking): a joint with one child — that child; with several (pelvis, spine3) —
- * the child weighing most in the vertex, if any does; a leaf (head, wrists, feet) — itself. */
+ * penetration, picking): a joint with one child — that child; with several — at the root
+ * (pelvis) the child weighing most in the vertex, if any does; elsewhere (spine3, the chest),
+ * when `names` are given, the trunk's own child (neck: the one named without left_/right_), so
+ * the chest and back stay the torso's — the collars' weights reach across the chest, and taking
+ * the heaviest child there painted the chest and back in the arm's colour (issue 26); a leaf
+ * (head, wrists, feet) — itself. */
 export function vertexJoints(
   skinIndex: ArrayLike<number>,
   skinWeight: ArrayLike<number>,
   parents: readonly number[],
+  names?: readonly string[],
 ): { joint: Uint8Array; bone: Uint8Array } {
   const n = skinIndex.length / 4;
   const children: number[][] = parents.map(() => []);
   parents.forEach((p, j) => p >= 0 && children[p].push(j));
+  // a branching joint above the root: its child continuing the trunk (-1: the heaviest child)
+  const trunkChild = parents.map((p, j) => {
+    if (p < 0 || !names || children[j].length < 2) return -1;
+    const centre = children[j].filter((k) => !/^(left|right)_/.test(names[k] ?? ""));
+    return centre.length === 1 ? centre[0] : -1;
+  });
   const joint = new Uint8Array(n);
   const bone = new Uint8Array(n);
   for (let v = 0; v < n; v++) {
@@ -155,8 +166,10 @@ export function vertexJoints(
     const j = skinIndex[4 * v + best];
     joint[v] = j;
     const kids = children[j];
+    const trunk = trunkChild[j];
     if (kids.length === 1) bone[v] = kids[0];
     else if (kids.length === 0) bone[v] = j;
+    else if (trunk >= 0) bone[v] = trunk;
     else {
       let pick = j;
       let weight = 0;

@@ -7,6 +7,7 @@ import { parseRig } from "../playback/rig";
 import { Character, parseHumanoid, type HumanoidTemplate } from "./Character";
 import { CONTACT_COLOUR, PENETRATION_COLOUR, jointColours } from "./colours";
 import { QUALITY } from "./quality";
+import { SELECT_COLOUR } from "./Mannequin";
 
 const J = (name: string) => skeleton.joints.indexOf(name);
 const rig = parseRig("m", rigJson);
@@ -164,6 +165,44 @@ describe("the skinned character (humanoid.glb, cloned per person)", () => {
     expect([...a.boneColours(elbow).keys()]).toEqual([colours[0][elbow]]);
     a.dispose();
     b.dispose();
+  });
+
+  // issue 26: the right collar's weights reach across the chest and back, which took the right
+  // arm's orange (and its highlight) far over the midline
+  it("keeps the arms' colours and highlights off the chest and back", () => {
+    const c = make();
+    c.setPose(person, 0, 0, 0, new Set());
+    const geometry = c.mesh.geometry;
+    const rest = geometry.getAttribute("position"); // the bind pose: facing +Z, left at +X
+    const colour = geometry.getAttribute("color");
+    const bone = c.mesh.userData.vertexJoint as Uint8Array;
+    const colours = jointColours(skeleton, 0);
+    const right = colours[J("right_shoulder")];
+    const hex = (v: number) => "#" + new THREE.Color().fromArray(colour.array, 3 * v).getHexString();
+    let orange = 0, chest = 0;
+    for (let v = 0; v < rest.count; v++) {
+      // the chest and back between the collars (the collars' own skin starts 6.4 cm right of
+      // the midline), front and back
+      const torso = rest.getY(v) > 1.2 && rest.getY(v) < 1.45 && Math.abs(rest.getX(v)) < 0.06;
+      if (!torso) continue;
+      chest++;
+      if (hex(v) === right) orange++;
+    }
+    expect(chest).toBeGreaterThan(20);
+    expect(orange).toBe(0); // 44 of them were orange before (the right collar's bone)
+    // the right arm selected: only its own bones' vertices are painted, none on the trunk's
+    c.selected = new Set(["right_collar", "right_shoulder", "right_elbow", "right_wrist"].map(J));
+    c.setPose(person, 1, 1, 0, new Set());
+    const arm = new Set(["right_collar", "right_shoulder", "right_elbow", "right_wrist"].map(J));
+    let painted = 0;
+    for (let v = 0; v < rest.count; v++) {
+      if (hex(v) !== new THREE.Color(SELECT_COLOUR).getHexString().padStart(7, "#")) continue;
+      painted++;
+      expect(arm.has(bone[v]), `vertex ${v} on bone ${bone[v]}`).toBe(true);
+      expect(rest.getX(v)).toBeLessThan(-0.06);
+    }
+    expect(painted).toBeGreaterThan(50);
+    c.dispose();
   });
 
   it("picks the bone under a ray, as the mannequin does", () => {

@@ -142,7 +142,8 @@ export class Character {
     const skinWeight = geometry.getAttribute("skinWeight").array;
     const fitted = fitPositions(geometry.getAttribute("position").array, skinIndex, skinWeight, templateRest, rest);
     geometry.setAttribute("position", new THREE.BufferAttribute(fitted, 3));
-    const { joint, bone } = vertexJoints(skinIndex, skinWeight, skeleton.parents);
+    // the chest and back take the trunk's bone (not a collar's): no arm colour bleeds onto them
+    const { joint, bone } = vertexJoints(skinIndex, skinWeight, skeleton.parents, skeleton.joints);
     this.vertexJoint = joint;
     this.vertexBone = bone;
     const colours = jointColours(skeleton, person).map((c) => new THREE.Color(c));
