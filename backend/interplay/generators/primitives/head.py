@@ -7,7 +7,8 @@ joint stays bit for bit, so "look up" on a walk keeps the walk.
 Angles are measured as the rig reads them, on the neck → head bone in the trunk frame
 (`pitch`: up is positive, `yaw`: towards the person's left is positive). The skeleton has no
 head orientation beyond that bone, which leans ~30° forward of the neck in the rest pose: a
-turn (yaw) shows as the head joint swinging sideways by that lean, not as a twist.
+turn (yaw) shows as the head joint swinging sideways on a cone of at least TURN_CONE_DEG (for
+performers whose head joint sits straight over the neck too), not as a twist.
 
 Shapes: joints (T, 22, 3) metres; angles in degrees.
 """
@@ -27,6 +28,8 @@ DEFAULT_DEG = {"look_up": 35.0, "look_down": 35.0, "look_left": 50.0, "look_righ
 MAX_PITCH_DEG = 50.0
 MAX_YAW_DEG = 75.0
 HEAD_EASE_S = 0.3
+TURN_CONE_DEG = 30.0   # a turn swings the head joint on a cone at least this wide (the rest
+                       # pose's neck → head bone leans ~30° forward of the neck)
 
 
 def pitch_yaw(joints: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -42,10 +45,16 @@ def turn_head(joints: np.ndarray, pitch_deg: np.ndarray, yaw_deg: np.ndarray) ->
     """Joints with the head joint turned about the neck: pitched up by `pitch_deg` (about the
     trunk's left axis), then turned left by `yaw_deg` (about pelvis → neck); (T,) each."""
     out = np.asarray(joints, dtype=np.float64).copy()
-    left, up, _ = trunk_axes(out)
-    rp = rotation(left, -np.radians(pitch_deg))       # + about left tips the head forward
-    ry = rotation(up, np.radians(yaw_deg))
+    left, up, chest = trunk_axes(out)
     v = out[:, sk.HEAD] - out[:, sk.NECK]
+    # A turn is about an axis leant back from the bone by at least TURN_CONE_DEG, so that the
+    # head joint swings sideways as a turning head's centre does even where a performer's head
+    # joint sits straight over the neck (a turn about the bone itself would not move it).
+    lean = np.degrees(np.arctan2((v * chest).sum(-1), (v * up).sum(-1)))
+    back = np.radians(np.clip(TURN_CONE_DEG - lean, 0.0, TURN_CONE_DEG))[:, None]
+    axis = np.cos(back) * up - np.sin(back) * chest
+    rp = rotation(left, -np.radians(pitch_deg))       # + about left tips the head forward
+    ry = rotation(axis, np.radians(yaw_deg))
     v = np.einsum("tij,tj->ti", ry @ rp, v)
     out[:, sk.HEAD] = out[:, sk.NECK] + v
     return out
