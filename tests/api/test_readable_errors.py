@@ -36,6 +36,10 @@ def test_query_and_export_422s_are_plain_words(fake_client):
     assert r.json()["detail"] == 'limit must be at most 50 (got "99")'
     r = fake_client.get("/api/motions", params={"client": "A" * 22, "limit": "many"})
     assert r.json()["detail"] == 'limit must be a whole number (got "many")'
+    r = fake_client.get("/api/motions", params={"client": "short"})
+    assert r.json()["detail"] == 'client is not in the expected form (got "short")'
+    r = fake_client.get("/api/motions/x/export", params={"format": "x"})
+    assert r.json()["detail"] == 'format must be \'bvh\', \'glb\' or \'json\' (got "x")'
 
 
 def test_plain_rewords_nested_messages():

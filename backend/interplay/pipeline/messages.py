@@ -37,7 +37,7 @@ _WORDS: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(a), b) for a
 ))
 
 # errors about the value itself (its type or range): the message says what was sent
-_SAYS_INPUT = ("less_than", "greater_than", "_type", "literal_error", "finite_number", "int_from_float",
+_SAYS_INPUT = ("less_than", "greater_than", "_type", "literal_error", "finite_number", "int_from_float", "pattern",
                "int_parsing", "float_parsing", "bool_parsing", "enum")
 _LOCATION_PREFIXES = ("body", "query", "path", "header")
 _VERBS = ("must ", "is ", "has ", "should ", "needs ")
