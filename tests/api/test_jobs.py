@@ -13,6 +13,7 @@ from starlette.websockets import WebSocketDisconnect
 
 from interplay.api import app as app_module
 from interplay.api.app import create_app
+from interplay.api.digest import frame_digests
 from tests.helpers.api import FakeGenerator, run_job
 
 BAD_JOBS = [
@@ -52,14 +53,14 @@ def _check_stream(job: dict, events: list[dict], persons: int, frames: int) -> l
     kinds = [e["type"] for e in events]
     assert kinds[0] == "plan" and kinds[-2:] == ["metrics", "done"], kinds
     assert {"frames", "highlights"} <= set(kinds[1:-2]) <= {"frames", "highlights", "segment",
-                                                         "review", "correction"}
+                                                         "review", "correction", "replace"}
     segments = events[0]["plan"]["segments"]
     assert segments and all({"prompt", "start", "end", "persons"} <= set(s) for s in segments)
     streamed = np.full((persons, frames, 22, 3), np.nan)
-    pairs = [(ev, events[i + 1]) for i, ev in enumerate(events) if ev["type"] == "frames"]
-    for ev, nxt in pairs:   # a repeated start (a corrected segment) replaces those frames
+    pairs = [(ev, events[i + 1]) for i, ev in enumerate(events) if ev["type"] in ("frames", "replace")]
+    for ev, nxt in pairs:   # a replace event (a corrected segment) replaces those frames
         assert nxt["type"] == "highlights"
-        assert len(ev["people"]) == persons and ev["total"] == frames
+        assert len(ev["people"]) == persons and ev.get("total", frames) == frames
         arr = np.asarray(ev["people"], dtype=np.float64)
         n = arr.shape[1]
         assert arr.shape[2:] == (22, 3)
@@ -72,7 +73,9 @@ def _check_stream(job: dict, events: list[dict], persons: int, frames: int) -> l
             assert len(nxt["min_distance"]) == n
     assert not np.isnan(streamed).any(), "every frame is streamed"
     done = events[-1]
-    assert done == {"type": "done", "motion_id": job["motion_id"], "frames": frames}
+    assert {k: v for k, v in done.items() if "digest" not in k} == {
+        "type": "done", "motion_id": job["motion_id"], "frames": frames}
+    assert done["frame_digests"] == frame_digests(streamed)   # the stored frames' digests
     return list(streamed)
 
 

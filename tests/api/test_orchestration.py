@@ -82,9 +82,11 @@ def test_a_drawn_path_is_followed_and_stored_with_the_plan(real_client):
     beyond = pelvis[~along]
     assert len(beyond) == 0 or np.all(np.diff(beyond[:, 0]) > -0.02)
     assert m["plan"]["trajectory"] == {"person": 0, "points": pts}
-    # The moved frames were streamed again: the last frames event per start is what is stored.
+    # The moved frames were streamed again (as replacements): applied in order, the frames and
+    # replace events are what is stored.
     streamed = np.full((120, 22, 3), np.nan)
-    for e in (e for e in events if e["type"] == "frames"):
+    assert {e["cause"] for e in events if e["type"] == "replace"} >= {"trajectory"}
+    for e in (e for e in events if e["type"] in ("frames", "replace")):
         arr = np.asarray(e["people"][0])
         streamed[e["start"]:e["start"] + len(arr)] = arr
     assert np.array_equal(streamed, np.asarray(m["people"][0]["joints"]))

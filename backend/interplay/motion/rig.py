@@ -73,6 +73,12 @@ HAND_BEND = np.deg2rad(40.0)     # the lag bends the wrist at most this much
 # The studio's mesh hand (`formats/humanoid.py`) on the template: its length from the wrist
 # and its half thickness (m); scaled to the person.
 HAND_REACH, HAND_THICK = 0.175, 0.024
+# A leaf tip pushed up off the floor turns its heading slowly: each frame the last heading
+# weighs this much against the tip's own horizontal direction (length ≤ 1; where the tip
+# is nearly level, hardly any push is needed and the heading hardly matters).
+# (Toes keep none: their tips point forward, well away from straight down; the library's
+# toe steps grow with it.)
+_HAND_HEADING_MEMORY = 2.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -241,22 +247,44 @@ def _body_scale(offsets: np.ndarray) -> float:
                  / np.linalg.norm(sk.REST_OFFSETS[1:], axis=1).sum())
 
 
+def _headings(flat: np.ndarray, ref: np.ndarray, memory: float) -> np.ndarray:
+    """Unit horizontal headings (T, 3) that follow the horizontal directions `flat` (T, 3)
+    where they are long and keep the previous frame's where they vanish (a leaf pointing
+    straight down has no heading of its own), `ref` (T, 3) breaking ties."""
+    out = np.empty_like(flat)
+    prev = np.zeros(3)
+    for i in range(len(flat)):
+        h = flat[i] + memory * prev + 1e-3 * ref[i]
+        n = float(np.linalg.norm(h))
+        prev = h / n if n > 1e-12 else np.array([0.0, 0.0, 1.0])
+        out[i] = prev
+    return out
+
+
 def _tip_above_floor(height: np.ndarray, glob_leaf: np.ndarray, rest_dir: np.ndarray,
-                     length: float) -> np.ndarray:
+                     length: float, ref: np.ndarray, memory: float = 0.0) -> np.ndarray:
     """World pitches (T, 3, 3) for a leaf joint: identity unless its tip (`length` along
     `rest_dir`, in its rest frame) would be under the floor, the joint being `height` (T,)
-    above it; then the least pitch up that puts the tip on the floor, or level with the joint
-    when the joint itself is under it. A continuous function of the pose."""
+    above it; then the least turn up that puts the tip on the floor, or level with the joint
+    when the joint itself is under it. The tip keeps its horizontal direction and is pushed
+    out along a heading that follows it over time (`_headings`; `ref` (T, 3): a direction
+    for ties, the parent bone's; `memory`: how much the last heading weighs, 0: none, the
+    tip turns up in its own vertical plane), so a tip pointing straight down does not spin:
+    continuous in the pose and in time."""
     tip = glob_leaf @ rest_dir                                   # tip direction, world (T, 3)
     want = np.clip(-height / length, -1.0, 0.0)                  # lowest allowed tip direction y
     low = tip[:, 1] < want
-    flat = np.linalg.norm(tip[:, [0, 2]], axis=-1)
-    ok = low & (flat > 1e-6)
-    # Turn the tip up in its vertical plane to direction y = want.
-    level = np.where(ok[:, None], tip * np.array([1.0, 0.0, 1.0]) / np.maximum(flat, 1e-6)[:, None], tip)
-    target = level * np.sqrt(1 - want ** 2)[:, None]
+    flat = tip * np.array([1.0, 0.0, 1.0])
+    heading = _headings(flat, ref * np.array([1.0, 0.0, 1.0]), memory)
+    # The horizontal part grown along the heading to the length sqrt(1 - want²) (the least
+    # push: none where the tip is just at `want`).
+    r2 = 1.0 - want ** 2
+    fh = np.sum(flat * heading, axis=-1)
+    push = -fh + np.sqrt(np.maximum(fh ** 2 - np.sum(flat * flat, axis=-1) + r2, 0.0))
+    target = flat + push[:, None] * heading
     target[:, 1] = want
-    return np.where(ok[:, None, None], rotation_between(tip, np.where(ok[:, None], target, tip)),
+    target = _unit(target)
+    return np.where(low[:, None, None], rotation_between(tip, np.where(low[:, None], target, tip)),
                     np.eye(3))
 
 
@@ -305,11 +333,14 @@ def _leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob: np
         g_el = glob[:, sk.PARENTS[wrist]]
         g = g_el @ local[:, wrist]
         height = joints[:, wrist, 1] - floor - HAND_THICK * scale
-        pitch = _tip_above_floor(height, g, _unit(offsets[wrist]), HAND_REACH * scale)
+        forearm = joints[:, wrist] - joints[:, sk.PARENTS[wrist]]
+        pitch = _tip_above_floor(height, g, _unit(offsets[wrist]), HAND_REACH * scale, forearm,
+                                 _HAND_HEADING_MEMORY)
         local[:, wrist] = np.swapaxes(g_el, -1, -2) @ pitch @ g
     for toe in _TOES:
         g_an = glob[:, sk.PARENTS[toe]]
-        pitch = _tip_above_floor(joints[:, toe, 1] - floor, g_an, _Z, float(np.linalg.norm(tips[toe])))
+        foot = joints[:, toe] - joints[:, sk.PARENTS[toe]]
+        pitch = _tip_above_floor(joints[:, toe, 1] - floor, g_an, _Z, float(np.linalg.norm(tips[toe])), foot)
         # World pitch applied after the ankle's rotation → local: ankle^T · pitch · ankle.
         local[:, toe] = np.swapaxes(g_an, -1, -2) @ pitch @ g_an
 
