@@ -60,6 +60,9 @@ NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seve
            "eight": 8, "nine": 9, "ten": 10}
 _NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
 ONCE = re.compile(r"\bonce\b|\bone\s+time\b|\ba\s+single\b")
+# A count said in words: "once", "twice", "three times", "one time".
+ONE_SAID = re.compile(r"\b(?:one|a\s+single)\s+[a-z-]+", re.IGNORECASE)     # "one backflip"
+COUNT_SAID = re.compile(rf"\b(?:once|twice|thrice|{_NUMBER}\s+times?)\b", re.IGNORECASE)
 
 
 def number(word: str) -> int | None:
@@ -154,3 +157,43 @@ def held_rx(words) -> re.Pattern:
     """A pose named by `words` held: "holds a squat", "squats and stays down", "in a deep squat"."""
     w = words_source(tuple(words))
     return rx(rf"{HELD_AROUND}{w}|{w}[^.]*\b(?:hold\w*|stay\w*|remain\w*)\b|\bin a (?:deep |low |full )?{w}")
+
+
+# --- phrase templates: how the catalogue writes a phrase with optional and alternative words ---
+# "arm* [held|stretched] out to (the|his|her) side*": words in order; `*` any ending; (a|b) one
+# of; [a|b] one of or none; `...` any words between (within the text); `~3` up to three words;
+# a trailing `!(a|b)` says the phrase may not go on with those words.
+_TOKEN = re.compile(r"!?\([^)]*\)|\[[^\]]*\]|\S+")
+
+
+def _alts(body: str) -> str:
+    return "|".join(sorted((r"\s+".join(_word(w) for w in alt.split()) for alt in body.split("|")),
+                           key=len, reverse=True))
+
+
+def template_source(template: str) -> str:
+    """The regular expression of one template (see above)."""
+    src, tail, glue = "", "", ""            # glue: what joins the next word to the source
+    for tok in _TOKEN.findall(template):
+        if tok.startswith("!("):
+            tail = rf"(?!\s+(?:{_alts(tok[2:-1])})\b)"
+            continue
+        if tok == "...":                     # any characters between
+            src, glue = src + r".*?", ""
+            continue
+        if tok.startswith("~") and tok[1:].isdigit():   # up to n words between
+            src, glue = src + rf"\s+(?:\w+\s+){{0,{int(tok[1:])}}}?", ""
+            continue
+        optional = tok.startswith("[")
+        word = rf"(?:{_alts(tok[1:-1])})" if tok[0] in "([" else _word(tok)
+        src += rf"(?:{glue}{word})?" if optional else glue + word
+        glue = r"\s+"
+    return r"\b" + src + r"\b" + tail
+
+
+def template_rx(templates) -> re.Pattern:
+    """One pattern for any of the templates."""
+    return rx("|".join(f"(?:{template_source(t)})" for t in templates) or r"(?!x)x", re.IGNORECASE)
+
+
+BOTH_SIDES = re.compile(r"\b(?:both|arms|hands)\b")

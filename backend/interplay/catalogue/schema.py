@@ -6,7 +6,9 @@
 
 An action is one thing a person (or two) can be asked to do. `words` are the word forms that
 name it in a prompt (a trailing `*` takes any ending: "sprint*" is sprint, sprints, sprinting);
-`names` are the set phrases of a gesture or pose ("t pose", "fist pump"); `descriptions` are
+`names` are the set phrases of a gesture or pose ("t pose", "fist pump"), rewritten to its
+`text`; `phrases` are templates with optional words that find it in a segment's words
+("arm* [held] out to (the|his|her) side*", see `grammar.template_source`); `descriptions` are
 sentences the text encoder compares prompts with. `kind` says how the planner treats it:
 travel / whole / part / light are motion verbs (a light verb carries no motion itself: "does",
 "performs"), gesture and pose are named movements rewritten to their `text`, interaction is a
@@ -57,6 +59,9 @@ class Action(BaseModel):
     not_before: list[str] = Field(default_factory=list)  # words that cancel a match when next
     names: list[str] = Field(default_factory=list)      # set phrases of a gesture or pose
     followed_by: list[str] = Field(default_factory=list)  # a name counts only before these (or a clause end)
+    phrases: list[str] = Field(default_factory=list)    # templates that name it in a segment's words (grammar.py)
+    part_phrases: list[str] = Field(default_factory=list)  # … in one part's instruction, when looser
+    ik: str | None = None             # the pose or lift the IK lays over captures for it (retrieve_edit)
     text: str | None = None           # gestures / poses: what the body does, third person
     hold: str | None = None           # poses: the held pose as a "with …" phrase
     persons: list[int] = Field(default_factory=lambda: [1])
@@ -82,8 +87,8 @@ class Action(BaseModel):
     def _consistent(self):
         if self.forms and len(self.forms) != 4:
             raise ValueError(f"{self.name}: forms are third, gerund, past, participle (4 words)")
-        if self.kind in ("gesture", "pose") and not self.names:
-            raise ValueError(f"{self.name}: a {self.kind} needs names")
+        if self.kind in ("gesture", "pose") and not (self.names or self.phrases):
+            raise ValueError(f"{self.name}: a {self.kind} needs names or phrases")
         if self.names and not self.text:
             raise ValueError(f"{self.name}: named phrases are rewritten to a text; it has none")
         if self.hold is not None and not self.hold.startswith("with "):
@@ -91,22 +96,36 @@ class Action(BaseModel):
         return self
 
 
-def specs(action: Action, count: int | None = None, side: str | None = None) -> list[dict]:
+def takes(check: str, param: str) -> bool:
+    """Does the named check (`motion/checks/named.py`) take this parameter?"""
+    import inspect
+
+    from interplay.motion.checks.named import CHECKS
+    spec = CHECKS.get(check)
+    return spec is not None and param in inspect.signature(spec.fn).parameters
+
+
+def specs(action: Action, count: int | None = None, side: str | None = None,
+          takes_at_least=lambda check: takes(check, "at_least")) -> list[dict]:
     """The action's checks as specs for `run_check`, "{count}" and "{side}" filled from the
-    segment: a count not asked becomes "at least one", a side not named "any"."""
+    segment: a count not asked becomes "at least one" where the check takes `at_least` (else
+    the check is left out: it cannot be held to a count nobody asked), a side not named "any"."""
     out = []
     for c in action.checks:
-        spec: dict = {"check": c.check}
+        spec: dict | None = {"check": c.check}
         for key, value in (c.model_extra or {}).items():
+            if spec is None:
+                break
             if value == "{count}":
                 if count is None:
-                    spec["at_least"] = 1
+                    spec = {**spec, "at_least": 1} if takes_at_least(c.check) else None
                     continue
                 value = count
             elif value == "{side}":
                 value = side or "any"
             spec[key] = value
-        out.append(spec)
+        if spec is not None:
+            out.append(spec)
     return out
 
 
