@@ -54,7 +54,10 @@ def knee_lifts(base: np.ndarray, count: int, side: str = "alternate") -> np.ndar
         thigh, shin = _bone(j, knee, hip), _bone(j, ankle, knee)
         k = j[on, hip] + thigh * (np.cos(theta) * -up[on] + np.sin(theta) * fwd[on])
         target = k - shin * (0.97 * up[on] + 0.2 * fwd[on])
-        j[on] = two_bone_ik(j[on], f"{s}_leg", target, pole=j[on, hip] + fwd[on], weight=w[on])
+        # the ankle eased towards its target, the knee always bending forward (a blended bend
+        # side would follow the straight standing leg's, which may point backwards)
+        goal = j[on, ankle] + w[on, None] * (target - j[on, ankle])
+        j[on] = two_bone_ik(j[on], f"{s}_leg", goal, pole=j[on, hip] + fwd[on])
     return j
 
 
