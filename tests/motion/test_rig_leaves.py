@@ -136,3 +136,20 @@ def test_hands_on_the_floor_do_not_spin():
                 worst = max(worst, float(excess.max()))
     assert steps_seen > 10_000
     assert over / steps_seen < 2e-3 and worst < 45.0, (over, worst)
+
+
+def test_the_bvh_and_glb_carry_the_wrist_and_head_turns(wave):
+    """The exports' head and wrist channels were 0 on every frame; now a wave's wrist and a
+    nod's head channels move, in the BVH and in the GLB."""
+    from interplay.motion.formats.bvh import read_bvh, write_bvh
+    from interplay.motion.formats.gltf import write_glb
+    from tests.helpers.gltf_files import accessor, load
+    for joints, name in ((wave[:40], "right_wrist"), (nod(np.repeat(wave[:1], 60, axis=0)), "head")):
+        bvh = read_bvh(write_bvh(joints))
+        cols = bvh._channel_columns[bvh.index(name)]
+        assert np.ptp(bvh.motion[:, cols], axis=0).max() > 5.0, name
+        doc, blob = load(write_glb([joints], mesh=False))
+        node = next(i for i, n in enumerate(doc.nodes) if n.name == name)
+        ch = next(c for c in doc.animations[0].channels if c.target.node == node)
+        q = accessor(doc, blob, doc.animations[0].samplers[ch.sampler].output)[:, [3, 0, 1, 2]]
+        assert np.ptp(angles(q.astype(np.float64))) > 5.0, name
