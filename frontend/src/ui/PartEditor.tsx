@@ -6,6 +6,8 @@ import { PART_LABELS } from "../directing/parts";
 import { FPS, useStudio } from "../store";
 
 const SUGGESTIONS = ["wave", "raise above head", "kick forward", "crouch"];
+// The head's own words (the head primitive: look, nod, shake).
+const HEAD_SUGGESTIONS = ["look up", "nod twice", "shake your head", "look left"];
 
 /** The editor for the clicked body part: an instruction, optionally over the timeline's range. */
 export function PartEditor() {
@@ -23,6 +25,7 @@ export function PartEditor() {
   const [text, setText] = useState("");
   if (!s.selected) return null;
   const two = s.persons > 1;
+  const hints = s.selected.part === "head" ? HEAD_SUGGESTIONS : SUGGESTIONS;
   const submit = async (e: FormEvent) => {
     e.preventDefault();
     if (text.trim() && (await applyPartEdit(text.trim()))) setText("");
@@ -41,13 +44,13 @@ export function PartEditor() {
       <input
         data-testid="part-prompt"
         aria-label="Instruction"
-        placeholder={`e.g. “${SUGGESTIONS[0]}”, “${SUGGESTIONS[1]}”`}
+        placeholder={`e.g. “${hints[0]}”, “${hints[1]}”`}
         value={text}
         onChange={(e) => setText(e.target.value)}
         list="part-suggestions"
       />
       <datalist id="part-suggestions">
-        {SUGGESTIONS.map((x) => (
+        {hints.map((x) => (
           <option key={x} value={x} />
         ))}
       </datalist>
