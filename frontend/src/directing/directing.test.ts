@@ -44,7 +44,7 @@ describe("parts", () => {
     expect(editPartOfJoint("left_foot")).toBe("left_leg");
     expect(editPartOfJoint("spine2")).toBe("whole_body");
     expect(editPartOfJoint("head")).toBe("head");
-    expect(editPartOfJoint("neck")).toBe("head");
+    expect(editPartOfJoint("neck")).toBe("whole_body");
     const arm = jointsOfPart(skeleton.joints, "left_arm").map((j) => skeleton.joints[j]);
     expect(arm).toEqual(["left_collar", "left_shoulder", "left_elbow", "left_wrist"]);
     expect(jointsOfPart(skeleton.joints, "whole_body")).toHaveLength(22);

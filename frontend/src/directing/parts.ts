@@ -1,6 +1,6 @@
 // Which editable body part a joint (or the bone ending at it) belongs to, for click-to-edit:
-// arms from the collar down, legs from the hip down, the head (and neck) the head, everything
-// else is the whole body.
+// arms from the collar down, legs from the hip down, the head (the neck → head bone) the head,
+// everything else (the neck's bone spans the upper chest) is the whole body.
 import type { EditPart } from "../api/types";
 
 const PREFIXES: [RegExp, EditPart][] = [
@@ -8,7 +8,7 @@ const PREFIXES: [RegExp, EditPart][] = [
   [/^right_(collar|shoulder|elbow|wrist)$/, "right_arm"],
   [/^left_(hip|knee|ankle|foot)$/, "left_leg"],
   [/^right_(hip|knee|ankle|foot)$/, "right_leg"],
-  [/^(head|neck)$/, "head"],
+  [/^head$/, "head"],
 ];
 
 export const PART_LABELS: Record<EditPart, string> = {
