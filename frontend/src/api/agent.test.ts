@@ -222,6 +222,9 @@ describe("verdicts read honestly (issue 26.4)", () => {
     expect(roundBadge("failed")).toEqual({ kind: "failed", text: "failed" });
     expect(roundBadge("not_covered")).toEqual({ kind: "not-covered", text: "not in the library" });
     expect(roundBadge("correct").text).toBe("needs correction");
+    const unsure = seg([round(0, "correct", [TOUCH]), { ...round(1, "unconfirmed", []), summary: "the person hops" }]);
+    expect(segmentVerdict(unsure, true)).toEqual({ kind: "unconfirmed", text: "unconfirmed: the reviewer cannot judge these words — it shows “the person hops”" });
+    expect(roundBadge("unconfirmed")).toEqual({ kind: "unconfirmed", text: "unconfirmed" });
   });
 });
 

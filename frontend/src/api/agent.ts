@@ -243,7 +243,7 @@ export function instructionOutcomes(
   });
 }
 
-export type VerdictKind = "passed" | "corrected" | "failed" | "not-covered" | "pending";
+export type VerdictKind = "passed" | "corrected" | "failed" | "not-covered" | "unconfirmed" | "pending";
 
 export interface Verdict {
   kind: VerdictKind;
@@ -255,6 +255,7 @@ export function roundBadge(verdict: string): { kind: string; text: string } {
   if (verdict === "ok") return { kind: "ok", text: "passed" };
   if (verdict === "failed") return { kind: "failed", text: "failed" };
   if (verdict === "not_covered") return { kind: "not-covered", text: "not in the library" };
+  if (verdict === "unconfirmed") return { kind: "unconfirmed", text: "unconfirmed" };
   return { kind: "correct", text: "needs correction" };
 }
 
@@ -281,6 +282,12 @@ export function segmentVerdict(seg: SegmentProgress | undefined, finished: boole
   if (last.verdict === "not_covered") {
     const nearest = (shown ?? "").trim() || showing(last);
     return { kind: "not-covered", text: `not in the library — showing the nearest${nearest ? `: ${nearest}` : ""}` };
+  }
+  if (last.verdict === "unconfirmed") {
+    // words the reviewer's calibration does not hold for: neither passed nor failed
+    const seen = showing(last);
+    const partly = fixes.length ? ` — after ${fixes.join("; ")}` : "";
+    return { kind: "unconfirmed", text: `unconfirmed: the reviewer cannot judge these words${seen ? ` — it shows “${seen}”` : ""}${partly}` };
   }
   // still needs correction: the segment is not done while its correction rounds run
   if (last.verdict !== "failed" && !finished && seg.status !== "done") return { kind: "pending", text: "needs correction — correcting…" };
