@@ -119,7 +119,8 @@ def test_every_entrys_checks_run_on_a_capture_with_and_without_a_count():
     from interplay.motion.clip import default_clips
     clip = next(c for c in default_clips() if len(c.people) == 1)
     for a in catalogue().action:
+        people = list(clip.people) * (2 if a.persons == [2] else 1)    # a two-person entry: two people
         for count, side in ((None, None), (2, "left")):
             for spec in specs(a, count, side):
-                run_check(list(clip.people), spec)          # raises on a parameter it lacks
+                run_check(people, spec)                      # raises on a parameter it lacks
     assert specs(catalogue().get("step")) == []             # steps: no count asked, no check

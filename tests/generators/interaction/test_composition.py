@@ -114,7 +114,7 @@ def test_the_roles_say_who_starts(gen):
 
 @pytest.mark.parametrize("prompt,persons,why", [
     ("a couple dances together", 2, "dances"),
-    ("two people fight", 2, "fight"),
+    ("the leader spins the follower", 2, "leader"),
     ("two friends shake hands", 1, "two people only"),
 ])
 def test_what_it_does_not_compose_goes_to_retrieval_with_the_reason(gen, prompt, persons, why):

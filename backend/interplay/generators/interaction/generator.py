@@ -25,7 +25,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
-from interplay.generators.interaction import gestures, touches, travel
+from interplay.generators.interaction import contest, gestures, partners, touches, travel
 from interplay.generators.interaction.bodies import SHARED
 from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, read_script, why_not
 from interplay.generators.interaction.library import Library
@@ -47,8 +47,10 @@ BUILDERS = {
     "push": touches.push, "wave": gestures.wave, "wave_back": gestures.wave_back,
     "bow": gestures.bow, "mirror": gestures.mirror, "follow": travel.follow,
     "one_stops": travel.one_stops, "side_by_side": travel.side_by_side, "approach": travel.approach,
-    "together": gestures.together,
+    "together": gestures.together, "help_up": partners.help_up, "spar": contest.spar,
+    "hand_over": partners.hand_over, "touch": partners.touch, "chase": contest.chase,
 }
+START = {"help_up": "any"}     # the one helped up starts on the floor
 FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)
 
 
@@ -151,7 +153,7 @@ class InteractionGenerator:
             except ValueError as exc:
                 errors.append(str(exc))
                 continue
-            checks = plausibility(people, start="standing", contact=contact)
+            checks = plausibility(people, start=START.get(script.kind, "standing"), contact=contact)
             failed = [f"{r.check}" + (f" (person {r.person})" if r.person is not None else "")
                       for r in checks if not r.passed]
             if best is None or len(failed) < len(best[2]):
@@ -195,7 +197,7 @@ class InteractionGenerator:
         if key in self._frames:
             return self._frames[key]
         s = Script(script["kind"], int(script["actor"]), bool(script["approach"]),
-                   bool(script["held"]), tuple(script.get("reasons", ())))
+                   bool(script["held"]), tuple(script.get("reasons", ())), script.get("part"))
         people, _ = self.compose(s, req, plan.seed, _roles(plan))
         self._remember(req, plan.seed, script, people)
         return people

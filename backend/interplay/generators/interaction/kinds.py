@@ -1,9 +1,10 @@
 """What a two-person prompt asks the two people to do together: one interaction kind, who
-starts it, and whether they walk up to each other first. Read from the prompt's words
-(keywords, first match wins), else from the MiniLM text encoder (the nearest of a few
-descriptions per kind, when it is near enough and not nearer a kind this generator leaves to
-another, such as dancing); the planner's per-person roles, when a segment carries them, say
-who does what. Every decision comes with its reason, for the plan.
+starts it, and whether they walk up to each other first. Read from the prompt's words (the
+catalogue's `interaction` entries, `actions.toml`, in file order: the first whose words are
+in the prompt), else from the MiniLM text encoder (the nearest of the entries' descriptions,
+when it is near enough and not nearer a prompt this generator leaves to another, such as
+dancing); the planner's per-person roles, when a segment carries them, say who does what.
+Every decision comes with its reason, for the plan.
 
     script = read_script("one pushes the other, who stumbles backwards", roles, encoder)
     script.kind, script.actor, script.reasons     # "push", 0, ("'push' in the prompt: …", …)
@@ -11,109 +12,150 @@ who does what. Every decision comes with its reason, for the plan.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
+from interplay.catalogue.grammar import words_of, words_rx
+from interplay.catalogue.load import catalogue, on_change
+
+# The kinds, in a fixed order (a scene's random draws are seeded by the kind's place here).
 KINDS = ("handshake", "high_five", "hug", "push", "wave", "wave_back", "bow", "mirror",
-         "follow", "one_stops", "side_by_side", "approach", "together")
-CONTACT = ("handshake", "high_five", "hug", "push")     # kinds where the two touch
+         "follow", "one_stops", "side_by_side", "approach", "together", "help_up", "spar",
+         "hand_over", "touch", "chase")
+CONTACT = ("handshake", "high_five", "hug", "push", "help_up", "hand_over", "touch")  # they touch
 APPROACHABLE = ("handshake", "high_five", "hug", "approach")
 
-# Keywords, in order: the first kind whose pattern matches is the prompt's.
-_PATTERNS: tuple[tuple[str, str], ...] = (
-    ("push", r"\bpush(?![\s-]?ups?\b)\w*|\bshov\w*"),
-    ("hug", r"\bhug\w*|\bembrac\w*|\bcuddl\w*|\barms? (a)?round each other"),
-    ("high_five", r"\bhigh[\s-]?fiv\w*|\bhi[\s-]?fiv\w*"),
-    ("handshake", r"\bshak\w* (each other'?s? )?hands?\b|\bhandshakes?\b"),
-    ("wave_back", r"\bwav\w* back\b|\breturns? the wave\b|\bwav\w* in return\b"),
-    ("wave", r"\bwav(e|es|ed|ing)\b"),
-    ("bow", r"\bbow(s|ed|ing)?\b"),
-    ("mirror", r"\bmirror\w*|\bcop(y|ies|ied|ying)\b|\bimitat\w*|\bmimic\w*"),
-    ("follow", r"\bfollow(?!ers?\b)\w*|\bchas(e|es|ed|ing)\b|\bbehind\b"),
-    ("one_stops", r"\b(one|the other|one of them|one person)\b[^.]*\bstops?\b"),
-    ("side_by_side", r"\bside by side\b|\bnext to each other\b|\bbeside each other\b|"
-                     r"\balongside\b|\bhand in hand\b|\bhold\w* hands\b|\bwalk\w* together\b"),
-    ("approach", r"\b(towards?|up to) each other\b|\bapproach\w*|\bmeet\b"),
-    # both do one person's action side by side ("two people jump together"); not a couple's
-    # dance or a fight, which are one motion of two people
-    ("together", r"\btogether\b|\bat the same time\b|\bin unison\b|\bin sync\w*|"
-                 r"\bsimultaneous\w*|\bboth (of them )?\w+s?\b"),
-)
-_NOT_TOGETHER = r"\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*|\bwrestl\w*"
+# Words that look like a kind's but are not it ("push-ups"), taken out before the kinds' words.
+_LOOK_ALIKE = ("push up*", "pushup*")
+# "Two people jump together", but not a couple's dance: one motion of two people.
+_NOT_TOGETHER = ("danc*", "salsa", "tango", "waltz*", "wrestl*")
 # Prompts this generator leaves to another (checked before the encoder's guess).
-_NOT_MINE = r"\bpush[\s-]?ups?\b|\bdanc\w*|\bleader\b|\bfollower\b|\btwirl\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bjump\w*|\bfight\w*|\bbox(ing)?\b|\bspar\w*"
-_HELD = r"\bhand in hand\b|\bhold\w* hands\b|\bholding each other'?s? hands?\b"
-_APPROACH = r"\b(walk|come|run|step|move|head)\w* (up )?(to|towards?) each other\b|\bapproach\w*|" \
-            r"\bwalk\w* up to\b"
-
-# The encoder's descriptions: kinds, and (None) what is left to another generator.
-_PROTOTYPES: tuple[tuple[str | None, str], ...] = (
-    ("handshake", "two people shake hands"), ("handshake", "they greet each other with a handshake"),
-    ("high_five", "two people give each other a high five"),
-    ("hug", "two people hug each other"), ("hug", "two friends embrace"),
-    ("push", "one person pushes the other away"),
-    ("wave", "two people wave at each other"), ("wave_back", "one waves and the other waves back"),
-    ("bow", "two people bow to each other"),
-    ("mirror", "one person copies the other's movements like a mirror"),
-    ("follow", "one person follows the other"),
-    ("one_stops", "two people walk side by side, then one stops"),
-    ("side_by_side", "two people walk side by side"), ("side_by_side", "two people stroll beside one another"),
-    ("approach", "two people walk towards each other"),
-    (None, "two people dance together"),
-    (None, "two people fight"), (None, "two people play a game"), (None, "two people sit down"),
-    (None, "two people salute each other"), (None, "two people exercise"), (None, "two people clap"),
-)
+_NOT_MINE = ("push up*", "pushup*", "danc*", "leader", "follower", "twirl*", "salsa", "tango",
+             "waltz*", "jump*")
+_HELD = ("hand in hand", "hold* hands", "holding each other's hand", "holding each other's hands",
+         "holding each others hands")
+_APPROACH = tuple(f"{v} {to}" for v in ("walk*", "come*", "came", "run*", "ran", "step*", "mov*", "head*")
+                  for to in ("to each other", "towards each other", "toward each other",
+                             "up to each other")) + ("approach*", "walk* up to")
+# The subject of "one stops": the stop counts after one of these, in the same sentence.
+_ONE = ("one", "the other", "one of them", "one person")
+# What the encoder's nearest description may be instead: prompts left to another generator.
+_OTHERS = ("two people dance together", "two people play a game", "two people sit down",
+           "two people salute each other", "two people exercise", "two people clap")
 MIN_SIMILARITY = 0.6
 # Role words: who does the kind's first action (actor) and who responds.
-_ACTOR = {"push": r"\bpush|\bshov", "wave_back": r"^(?!.*\bback\b).*\bwav", "follow": r"\blead|\bahead|\bin front",
-          "one_stops": r"\bstop|\bhalt|\bstands? still"}
-_RESPONDER = {"push": r"\bstumbl|\bpushed\b|\bfall|\bstagger|\bknock", "wave_back": r"\bwav\w* back|\breturn",
-              "follow": r"\bfollow|\bbehind", "one_stops": r"\bkeeps? (on )?walking|\bcontinues",
-              "mirror": r"\bcop|\bmirror|\bimitat|\bmimic"}
+_ACTOR = {"push": ("push*", "shov*"), "wave_back": ("wav*",), "follow": ("lead*", "ahead", "in front"),
+          "one_stops": ("stop*", "halt*", "stand still", "stands still"),
+          "help_up": ("help*", "pull*", "reach*", "lend*"), "hand_over": ("hand*", "give*", "gave", "pass*", "offer*"),
+          "touch": ("tap", "taps", "pat", "pats", "touches", "grab*", "pok*", "nudg*"),
+          "chase": ("chases", "chasing", "pursu*", "run* after", "catch*")}
+_RESPONDER = {"push": ("stumbl*", "pushed", "fall*", "stagger*", "knock*"), "wave_back": ("wav* back", "return*"),
+              "follow": ("follow*", "behind"),
+              "one_stops": ("keep walking", "keeps walking", "keep on walking", "keeps on walking", "continues"),
+              "mirror": ("cop*", "mirror*", "imitat*", "mimic*"),
+              "help_up": ("get* up", "gets up", "rise*", "lying", "fallen", "on the floor", "stand* up"),
+              "hand_over": ("receiv*", "take*", "took", "accept*"),
+              "touch": ("is tapped", "tapped", "patted", "touched", "grabbed", "turns around"),
+              "chase": ("flee*", "run* away", "escap*", "is chased", "chased", "runs from")}
+_VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_stops": "stops",
+         "mirror": "leads (the other mirrors)", "help_up": "helps", "hand_over": "hands it over",
+         "touch": "touches", "chase": "chases", "spar": "strikes first"}
+# Prompts whose first-named person is the one who responds ("one person follows the other").
+_FIRST = ("one", "a", "the first")
+_FIRST_RESPONDS = {"follow": ("follow", "follows", "trail", "trails"),
+                   "mirror": ("copy", "copies", "mirror", "mirrors", "imitate", "imitates", "mimic", "mimics")}
+# A touched part's words ("on the shoulder", "her arm"), for the parts of the touch entry.
+_PART_WORDS = {"shoulder": ("shoulder*",), "back": ("back",), "arm": ("arm", "arms", "elbow*", "wrist*", "forearm*"),
+               "head": ("head", "hair", "forehead", "cheek"), "hand": ("hand", "hands", "palm")}
 
 
 @dataclass(frozen=True)
 class Script:
     """kind: one of KINDS; actor: the person who starts it (the pusher, the first to wave or
-    bow, the leader who is followed or copied, the one who stops), the other responds;
-    approach: they walk up to each other first; held: hands held (side by side)."""
+    bow, the leader who is followed or copied, the one who stops, the helper, the giver, the
+    one who touches, the chaser), the other responds; approach: they walk up to each other
+    first; held: hands held (side by side)."""
     kind: str
     actor: int = 0
     approach: bool = False
     held: bool = False
     reasons: tuple[str, ...] = field(default_factory=tuple)
+    part: str | None = None     # touch: the partner's part the hand goes to
 
     def to_json(self) -> dict:
-        return {"kind": self.kind, "actor": self.actor, "approach": self.approach,
-                "held": self.held, "reasons": list(self.reasons)}
+        out = {"kind": self.kind, "actor": self.actor, "approach": self.approach,
+               "held": self.held, "reasons": list(self.reasons)}
+        if self.part is not None:
+            out["part"] = self.part
+        return out
 
 
-def _match(pattern: str, text: str) -> str | None:
-    m = re.search(pattern, text, re.I)
+@dataclass(frozen=True)
+class _Entry:
+    kind: str
+    words: tuple[str, ...]
+    not_before: tuple[str, ...]
+    descriptions: tuple[str, ...]
+    parts: tuple[str, ...]
+
+
+@lru_cache(maxsize=1)
+def entries() -> tuple[_Entry, ...]:
+    """The catalogue's two-person entries made by composition, in file order."""
+    out = []
+    for a in catalogue().of_kind("interaction"):
+        kind = a.made_by.composition
+        if kind in KINDS and 2 in a.persons:
+            out.append(_Entry(kind, tuple(a.words), tuple(a.not_before), tuple(a.descriptions), tuple(a.parts)))
+    return tuple(out)
+
+
+on_change(entries.cache_clear)
+
+
+def _match(words, text: str, not_before=()) -> str | None:
+    m = words_rx(tuple(words), tuple(not_before)).search(text)
     return m.group(0) if m else None
+
+
+def _one_stops(text: str, e: _Entry) -> str | None:
+    """The stop word after "one" / "the other" … in the same sentence."""
+    for sentence in text.split("."):
+        one = words_rx(_ONE).search(sentence)
+        if one:
+            stop = words_rx(e.words, e.not_before).search(sentence, one.end())
+            if stop:
+                return sentence[one.start():stop.end()].strip()
+    return None
 
 
 def keyword_kind(prompt: str) -> tuple[str | None, str]:
     """(kind, reason) by keywords, or (None, why not)."""
-    for kind, pattern in _PATTERNS:
-        word = _match(pattern, prompt)
-        if word and not (kind == "together" and _match(_NOT_TOGETHER, prompt)):
-            return kind, f"'{word}' in the prompt: {kind}"
+    text = words_rx(_LOOK_ALIKE).sub(" ", prompt)
+    for e in entries():
+        word = _one_stops(text, e) if e.kind == "one_stops" else _match(e.words, text, e.not_before)
+        if word and not (e.kind == "together" and _match(_NOT_TOGETHER, prompt)):
+            return e.kind, f"'{word}' in the prompt: {e.kind}"
     word = _match(_NOT_MINE, prompt)
     if word:
         return None, f"'{word}' in the prompt: not an interaction this generator composes"
     return None, "no interaction keyword in the prompt"
 
 
+def _prototypes() -> list[tuple[str | None, str]]:
+    return [(e.kind, d) for e in entries() for d in e.descriptions] + [(None, d) for d in _OTHERS]
+
+
 def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
     """(kind, reason) by the nearest prototype description, or (None, why not)."""
-    texts = [t for _, t in _PROTOTYPES]
+    protos = _prototypes()
+    texts = [t for _, t in protos]
     emb = np.asarray(encoder.encode(texts + [prompt]))
     sims = emb[:-1] @ emb[-1]
     best = int(np.argmax(sims))
-    kind, text, sim = _PROTOTYPES[best][0], texts[best], float(sims[best])
+    kind, text, sim = protos[best][0], texts[best], float(sims[best])
     if kind is None:
         return None, f"nearest description '{text}' ({sim:.2f}) is not one this generator composes"
     if sim < MIN_SIMILARITY:
@@ -121,12 +163,26 @@ def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
     return kind, f"the text encoder: nearest description '{text}' ({sim:.2f})"
 
 
-_VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_stops": "stops",
-         "mirror": "leads (the other mirrors)"}
-# Prompts whose first-named person is the one who responds ("one person follows the other").
-_SUBJECT = r"^\W*(one|a|the first)( person| of them)?\s+"
-_FIRST_RESPONDS = {"follow": _SUBJECT + r"(follows?|chases?|trails?)\b",
-                   "mirror": _SUBJECT + r"(cop(y|ies)|mirrors?|imitates?|mimics?)\b"}
+def _starts(kind: str, text: str) -> bool:
+    if kind == "wave_back":       # waves, and not back
+        return bool(_match(_ACTOR[kind], text)) and not _match(("back",), text)
+    return bool(_match(_ACTOR.get(kind, ()), text))
+
+
+def _first_responds(kind: str, prompt: str) -> bool:
+    """"One person follows the other": the subject the prompt names first does the response."""
+    w = words_of(prompt)
+    if w[:2] == ["the", "first"]:
+        w = w[2:]
+    elif w[:1] and w[0] in _FIRST:
+        w = w[1:]
+    else:
+        return False
+    if w[:1] == ["person"]:
+        w = w[1:]
+    elif w[:2] == ["of", "them"]:
+        w = w[2:]
+    return bool(w) and w[0] in _FIRST_RESPONDS.get(kind, ())
 
 
 def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
@@ -136,15 +192,32 @@ def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
     verb = _VERB.get(kind, "starts")
     if roles and kind in _RESPONDER:
         texts = [str(roles.get("0", "")), str(roles.get("1", ""))]
-        responds = [bool(re.search(_RESPONDER[kind], t, re.I)) for t in texts]
-        starts = [bool(re.search(_ACTOR[kind], t, re.I)) if kind in _ACTOR else False for t in texts]
+        responds = [bool(_match(_RESPONDER[kind], t)) for t in texts]
+        starts = [_starts(kind, t) if kind in _ACTOR else False for t in texts]
         score = [int(s) - int(r) for s, r in zip(starts, responds)]
         if score[0] != score[1]:
             who = int(np.argmax(score))
             return who, f"roles: person {who} {verb} ('{texts[who]}'; the other: '{texts[1 - who]}')"
-    if kind in _FIRST_RESPONDS and re.search(_FIRST_RESPONDS[kind], prompt, re.I):
+    if kind in _FIRST_RESPONDS and _first_responds(kind, prompt):
         return 1, f"person 1 {verb} (the prompt's first-named one responds)"
     return 0, f"person 0 {verb} (the one the prompt names first)"
+
+
+def touched_part(prompt: str) -> tuple[str, str]:
+    """(part, reason): the partner's part a touch goes to, the first the prompt names of the
+    touch entry's parts (shoulder by default)."""
+    parts = next((e.parts for e in entries() if e.kind == "touch"), ()) or tuple(_PART_WORDS)
+    found = []
+    for p in parts:
+        m = words_rx(_PART_WORDS.get(p, (p,))).search(prompt)
+        if m:
+            found.append((m.start(), p, m.group(0)))
+    if not found:
+        return "shoulder", "no body part named: the shoulder"
+    if len(found) > 1:        # "puts a hand on her shoulder": the hand is the toucher's own
+        found = [f for f in found if f[1] != "hand"]
+    _, part, word = min(found)
+    return part, f"'{word}' in the prompt: the hand goes to the other's {part}"
 
 
 def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script | None:
@@ -160,13 +233,17 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
     actor, who = _actor(kind, prompt, roles)
     approach = kind == "approach" or (kind in APPROACHABLE and bool(_match(_APPROACH, prompt)))
     held = kind == "side_by_side" and bool(_match(_HELD, prompt))
+    part = None
+    if kind == "touch":
+        part, where = touched_part(prompt)
+        reasons.append(where)
     if kind != "approach" and approach:
         reasons.append("they walk up to each other first")
     if held:
         reasons.append("hands held")
     if kind in _RESPONDER:
         reasons.append(who)
-    return Script(kind, actor, approach, held, tuple(reasons))
+    return Script(kind, actor, approach, held, tuple(reasons), part)
 
 
 def why_not(prompt: str, encoder=None) -> str:

@@ -67,8 +67,34 @@ def _steps_back(c: Clip) -> bool:
     return m.steps(b) >= seconds and m.path_length(b) / seconds >= 0.7
 
 
+def _strikes(kind: str):
+    """Clips with at least two punches (or kicks) of their own, done in place (a sparring
+    partner's blows: `checks.named.events`)."""
+    def ok(c: Clip) -> bool:
+        from interplay.motion.checks.named import events
+        j = c.people[0].astype(np.float64)
+        return c.frames >= 40 and _travel(j) < 1.0 and len(events(m.frame_of(j))[kind]) >= 2
+    return ok
+
+
+def _runs(c: Clip) -> bool:
+    """A run ahead: ≥ 2 m/s over the clip, feet stepping, at least 1.5 s (a loopable gait)."""
+    j = c.people[0].astype(np.float64)
+    return c.frames >= 30 and _travel(j) / (c.frames / sk.FPS) >= 2.0 and m.steps(m.frame_of(j)) >= 2
+
+
+def _gets_up(c: Clip) -> bool:
+    """From the floor (pelvis under 40 % of where it ends) to standing at the end."""
+    y = c.people[0][:, sk.PELVIS, 1].astype(np.float64) - c.people[0][..., 1].min()
+    return bool(y[:5].mean() < 0.4 * y[-5:].mean()) and bool(m.standing(m.frame_of(c.people[0].astype(np.float64)))[-1])
+
+
 FAMILIES = {
     "wave": (r"wave", _waves),
+    "punch": (r"punch", _strikes("punch")),
+    "kick": (r"kick", _strikes("kick")),
+    "run": (r"runs", _runs),
+    "getup": (r"gets up", _gets_up),
     "bow": (r"bows", _bows),
     "walk_back": (r"walks backwards", _steps_back),
     "arms": (r"", _arms),

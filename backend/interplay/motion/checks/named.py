@@ -663,6 +663,82 @@ def approach(a, b, fa, fb, min_m: float = 1.0):
     return got >= min_m, round(got, 2), f"≥ {min_m} m closer"
 
 
+# ---- two people: composed kinds of issue 24 (help up, spar, hand over, touch, chase) ---------
+
+@pair
+def helped_up(a, b, fa, fb, min_s: float = 0.3):
+    """One goes from the floor (pelvis under 60 % of standing height) to standing, a hand of each joined (≤ 5 cm) ≥ `min_s` s while they rise, the other standing."""
+    best = 0.0
+    gap = np.min([m.hand_gap(a, b, sa, sb) for sa in m.SIDES for sb in m.SIDES], axis=0)
+    for fr, fh in ((fa, fb), (fb, fa)):
+        ratio = m.pelvis_ratio(fr)
+        if not (ratio[0] < 0.6 and bool(m.standing(fr)[-1])) or float(m.standing(fh).mean()) < 0.8:
+            continue
+        rising = (ratio >= 0.3) & (ratio <= 0.9) & (np.gradient(ratio) > 0)
+        best = max(best, _run_seconds(fill_gaps(rising) & (gap <= HAND_TOUCH_M))[0])
+    return best >= min_s, round(best, 2), f"hands joined ≤ {HAND_TOUCH_M} m ≥ {min_s} s while one rises from the floor"
+
+
+@pair
+def spar(a, b, fa, fb, min_m: float = 0.9, max_m: float = 2.0, within_deg: float = 60.0):
+    """Facing each other (within 60°) most of the time, `min_m`–`max_m` m apart, each throwing a punch or kick, not both at once."""
+    dist = np.median(np.linalg.norm(a[:, sk.PELVIS][:, [0, 2]] - b[:, sk.PELVIS][:, [0, 2]], axis=1))
+    facing = float(_facing_each_other(a, b, fa, fb, within_deg).mean())
+    blows = [sorted(e["punch"] + e["kick"]) for e in (events(fa), events(fb))]
+    apart = all(blows) and abs(blows[0][0] - blows[1][0]) >= 2
+    ok = min_m <= dist <= max_m and facing >= 0.5 and bool(apart)
+    return bool(ok), {"distance_m": round(float(dist), 2), "facing": round(facing, 2),
+                      "blows": [len(x) for x in blows]}, (
+        f"{min_m}–{max_m} m apart, facing ≥ half the time, both strike, at different times")
+
+
+@pair
+def hand_over(a, b, fa, fb, max_m: float = contact.HANDS_MEET_M, hold_s: float = 0.5):
+    """A hand of each meets the other's (≤ 10 cm), then they part and the receiving hand stays up in front of its owner (≥ 10 cm over the pelvis, ≥ 15 cm ahead) for ≥ `hold_s` s."""
+    best = 0.0
+    for sa in m.SIDES:
+        for sb in m.SIDES:
+            gap = m.hand_gap(a, b, sa, sb)
+            met = np.flatnonzero(gap <= max_m)
+            if not len(met):
+                continue
+            after = slice(int(met[-1]) + 1, None)
+            for j, f, side in ((a, fa, sa), (b, fb, sb)):
+                rel = f.local(m.hand_point(j, side) - j[:, sk.PELVIS])
+                up = (rel[1] >= 0.10) & (rel[2] >= 0.15) & (gap > max_m + 0.1)
+                best = max(best, _run_seconds(up[after])[0])
+    return best >= hold_s, round(best, 2), f"hands ≤ {max_m} m, then one kept up in front ≥ {hold_s} s"
+
+
+@pair
+def touch_part(a, b, fa, fb, part: str = "any", min_s: float = 0.5):
+    """A hand of one on the other's named part (shoulder, back, arm, head, hand; "any") for ≥ `min_s` s."""
+    parts = ("shoulder", "back", "arm", "head", "hand") if part == "any" else (part,)
+    best = 0.0
+    for doer, partner, fp in ((a, b, fb), (b, a, fa)):
+        for p in parts:
+            if p == "hand":
+                gap = np.min([m.hand_gap(doer, partner, s, t) for s in m.SIDES for t in m.SIDES], axis=0)
+            else:
+                gap = contact.hand_on(doer, partner, fp, p)
+            best = max(best, _run_seconds(gap <= contact.TOUCH_M)[0])
+    return best >= min_s, round(best, 2), f"a hand on the partner's {part} ≤ {contact.TOUCH_M} m for ≥ {min_s} s"
+
+
+@pair
+def chase(a, b, fa, fb, min_m: float = 2.0, closes_m: float = 0.8):
+    """Both travel ≥ `min_m` m the same way, one behind the other, and the one behind closes the gap by ≥ `closes_m` m."""
+    dist = np.linalg.norm(a[:, sk.PELVIS][:, [0, 2]] - b[:, sk.PELVIS][:, [0, 2]], axis=1)
+    both = (m.speed(fa) > MOVING_SPEED) & (m.speed(fb) > MOVING_SPEED)
+    closed = 0.0
+    if both.any():
+        d = dist[int(np.argmax(both)):]
+        closed = float(np.max(np.maximum.accumulate(d) - d))
+    fol = follows(a, b, fa, fb, min_m=min_m)
+    return bool(fol[0]) and closed >= closes_m, {"closed_m": round(closed, 2), **fol[1]}, (
+        f"one behind the other, both ≥ {min_m} m, the gap closed by ≥ {closes_m} m")
+
+
 # ---- plausibility -----------------------------------------------------------------------------
 
 def no_pops(joints: np.ndarray, frame: BodyFrame) -> tuple[bool, Any, str]:
