@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import re
 
+from interplay.catalogue.grammar import COUNT_SAID, ONE_SAID
 from interplay.catalogue.load import catalogue
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose, split_subject
 from interplay.planner.schema import Coverage
@@ -75,6 +76,11 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
                     new.base, new.verb = f"a person {new.text}", VERBS["pose"]
                 new.subject = action.subject
                 new.matched = (match.phrase, match.score)
+                said = COUNT_SAID.search(action.text)
+                count = said.group(0) if said else "once" if ONE_SAID.search(action.text) else None
+                if count and not COUNT_SAID.search(new.text):     # "a backflip once": keep the count
+                    new.text, new.base = f"{new.text} {count}", f"{new.base} {count}"
+                    reasons.append(f"count: '{count}' kept after the nearest phrase")
                 return new
     if not any(lookup(w) or noun_verb(w) for w in words) and not _unknown_verb(words):
         reasons.append(f"dropped '{clause}': no motion in it")

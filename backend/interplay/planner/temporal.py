@@ -19,6 +19,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from interplay.catalogue.grammar import COUNT_SAID
 from interplay.planner.verbs import doing_nouns, gerund, lookup, noun_verb, third
 
 NUMBERS = {"once": 1, "one": 1, "twice": 2, "two": 2, "thrice": 3, "three": 3, "four": 4,
@@ -143,7 +144,7 @@ def _noun_to_verb(text: str) -> tuple[str, int]:
         if verb is None:
             continue
         around = " around" if verb in ("turn", "spin") and "full" in (adj or "") else ""
-        if det in ("a", "an", "one") and verb in COUNTED_ONCE:
+        if det in ("a", "an", "one") and verb in COUNTED_ONCE and not COUNT_SAID.search(rest):
             around += " once"               # "does one squat", "throws a punch": one, said
         return f"{head}{third(verb)}{around}{rest}", count
     return text, 1

@@ -25,7 +25,7 @@ import numpy as np
 from interplay.generators.retrieval import constrained as con
 from interplay.generators.retrieval import counts, postures, verify
 from interplay.generators.retrieval.index import RetrievalIndex
-from interplay.generators.retrieval.intent import LOW, Intent
+from interplay.generators.retrieval.intent import LOW, Intent, count_of
 
 STANDING = "a person stands still"
 
@@ -44,7 +44,33 @@ def start_end(index: RetrievalIndex, intent: Intent, after: dict | None
 
 def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.Generator,
                  after: dict | None, intent: Intent) -> list[dict]:
-    """The pieces of one person's track for a segment (see the module doc)."""
+    """The pieces of one person's track for a segment (see the module doc); a count asked of
+    an action the captures perform whole (a cartwheel, a flip, a spin) is kept exact."""
+    pieces = _drawn(index, text, frames, rng, after, intent)
+    # (spins are held to their turn, not to whole captures: a spin capture may turn less)
+    count = count_of(text) if intent.action is None and intent.hold is None and intent.turn is None else None
+    return _counted_whole(index, pieces, count) if count else pieces
+
+
+# A piece that covers this share of its capture is one whole performance of it (a cartwheel,
+# a flip: captures a second or three long, chained to fill the segment when no count is read).
+WHOLE = 0.6
+
+
+def _counted_whole(index: RetrievalIndex, pieces: list[dict], count: int) -> list[dict]:
+    """The track cut after `count` whole performances when it holds more ("does a cartwheel
+    once" drawn as three); the generator holds the last pose to the segment's end, as after a
+    counted jump (a standing capture drawn on from there finds waving and fidgeting ones)."""
+    whole = 0
+    for i, p in enumerate(pieces):
+        whole += (p["end"] - p["start"]) >= WHOLE * index.clip(p["clip"]).frames
+        if whole == count:
+            return pieces[:i + 1]
+    return pieces
+
+
+def _drawn(index: RetrievalIndex, text: str, frames: int, rng: np.random.Generator,
+           after: dict | None, intent: Intent) -> list[dict]:
     plain = lambda: index.track(text, frames, rng, after=after)  # noqa: E731
     if intent.plain:
         if after is None and intent.start in (None, "standing"):
