@@ -58,7 +58,9 @@ def names_source(names, followed_by=()) -> str:
 # --- numbers and counts ---
 NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
            "eight": 8, "nine": 9, "ten": 10}
-_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|a\s+few|several|a\s+couple(?:\s+of)?)"
+# Counts said without a number: a few and several are three, a couple two.
+VAGUE = {"a few": 3, "several": 3, "a couple": 2, "a couple of": 2}
 ONCE = re.compile(r"\bonce\b|\bone\s+time\b|\ba\s+single\b")
 # A count said in words: "once", "twice", "three times", "one time".
 ONE_SAID = re.compile(r"\b(?:one|a\s+single)\s+[a-z-]+", re.IGNORECASE)     # "one backflip"
@@ -66,8 +68,8 @@ COUNT_SAID = re.compile(rf"\b(?:once|twice|thrice|{_NUMBER}\s+times?)\b", re.IGN
 
 
 def number(word: str) -> int | None:
-    w = word.lower()
-    return int(w) if w.isdigit() else {"twice": 2, "thrice": 3, **NUMBERS}.get(w)
+    w = " ".join(word.lower().split())
+    return int(w) if w.isdigit() else {"twice": 2, "thrice": 3, **NUMBERS, **VAGUE}.get(w)
 
 
 def times_rx(nouns) -> re.Pattern:
