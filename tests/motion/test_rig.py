@@ -7,12 +7,12 @@ import numpy as np
 import pytest
 
 from interplay.motion import skeleton as sk
+from interplay.motion.formats.presets import resample_rig
 from interplay.motion.kinematics import fit_to_skeleton, forward_kinematics, inverse_kinematics
 from interplay.motion.rig import (
     Rig,
     end_sites,
     global_rotations,
-    resample_rig,
     rig_positions,
     slerp,
     solve_rig,

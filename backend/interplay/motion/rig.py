@@ -345,7 +345,7 @@ def _leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob: np
         local[:, toe] = np.swapaxes(g_an, -1, -2) @ pitch @ g_an
 
 
-def _continuous(q: np.ndarray) -> np.ndarray:
+def continuous(q: np.ndarray) -> np.ndarray:
     """Quaternions (T, J, 4) with each one's sign flipped to agree with the frame before."""
     q = q.copy()
     for i in range(1, q.shape[0]):
@@ -413,7 +413,7 @@ def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: flo
     local[:, s3] = np.swapaxes(glob[:, sk.PARENTS[s3]], -1, -2) @ glob[:, s3]
     ground = floor_height([joints]) if floor is None else float(floor)
     _leaves(joints, offsets, local, glob, fps, ground, leaves or {})
-    quats = _continuous(matrix_to_quat(local))
+    quats = continuous(matrix_to_quat(local))
     return Rig(offsets=offsets.copy(), root=joints[:, sk.PELVIS].copy(), rotations=quats)
 
 
@@ -460,28 +460,3 @@ def slerp(q0: np.ndarray, q1: np.ndarray, w: np.ndarray) -> np.ndarray:
     b = np.where(near, w, np.sin(w * theta) / np.where(near, 1.0, sin))
     out = a * q0 + b * q1
     return out / np.linalg.norm(out, axis=-1, keepdims=True)
-
-
-def resampled_frames(n: int, src_fps: float, dst_fps: float) -> int:
-    """How many frames n frames at src_fps become at dst_fps: the duration's, rounded up so
-    that the end is included."""
-    if n < 2 or abs(src_fps - dst_fps) < 1e-9:
-        return n
-    return int(np.ceil((n - 1) / src_fps * dst_fps - 1e-6)) + 1
-
-
-def resample_rig(rig: Rig, src_fps: float, dst_fps: float) -> Rig:
-    """The rig at another frame rate over the same duration: root positions linearly,
-    rotations by slerp, keys at i / dst_fps up to the first at or after the end, which holds
-    the last pose (so no pose is dropped: ceil(duration * dst_fps) + 1 frames). Same rate:
-    unchanged."""
-    n = rig.frames
-    if n < 2 or abs(src_fps - dst_fps) < 1e-9:
-        return rig
-    pos = np.minimum(np.arange(resampled_frames(n, src_fps, dst_fps)) / dst_fps * src_fps, n - 1)
-    lo = np.clip(np.floor(pos + 1e-9).astype(int), 0, n - 1)
-    hi = np.clip(lo + 1, 0, n - 1)
-    w = np.clip(pos - lo, 0.0, 1.0)
-    root = rig.root[lo] * (1 - w[:, None]) + rig.root[hi] * w[:, None]
-    rot = slerp(rig.rotations[lo], rig.rotations[hi], np.broadcast_to(w[:, None], (len(w), sk.NUM_JOINTS)))
-    return Rig(offsets=rig.offsets, root=root, rotations=_continuous(rot))

@@ -221,7 +221,8 @@ PRESETS = [  # fps, units, up, names: every value of each at least once
 @pytest.mark.parametrize("fps,units,up,names", PRESETS)
 def test_each_preset_reads_back_in_bvhio_within_1mm(real_clips, tmp_path, fps, units, up, names):
     from interplay.motion.formats.bvh import UNITS, Z_UP, joint_names
-    from interplay.motion.rig import resample_rig, rig_positions, solve_rig
+    from interplay.motion.formats.presets import resample_rig
+    from interplay.motion.rig import rig_positions, solve_rig
     joints, _ = fit_to_skeleton(real_clips["jump"][:60])          # on fixed bones, 20 fps
     path = tmp_path / "a.bvh"
     path.write_text(write_bvh(joints, out_fps=fps, units=units, up=up, names=names))

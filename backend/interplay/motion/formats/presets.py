@@ -6,7 +6,7 @@ one way both turn a person's joints into the rig they write.
     bone_axes(offsets)                                # Mixamo-style rest axes (GLB)
 
 Frame rates: the motion's duration at the new rate with the last pose kept
-(`rig.resample_rig`: ceil(duration * fps) + 1 frames). Units: metres or centimetres. Names:
+(`resample_rig`: ceil(duration * fps) + 1 frames). Units: metres or centimetres. Names:
 SMPL's, or Mixamo's (`mixamorig:` prefix, as Mixamo's own rigs, so a retargeting tool maps
 bones by name), with Mixamo's end bones (HeadTop_End, LeftToe_End, …) at the leaves' tips.
 """
@@ -20,7 +20,7 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.formats.floor import floor_pass
 from interplay.motion.kinematics import floor_height
-from interplay.motion.rig import Rig, resample_rig, solve_rig
+from interplay.motion.rig import Rig, continuous, slerp, solve_rig
 
 FPS_CHOICES: tuple[int, ...] = (20, 24, 30, 60)
 UNITS: dict[str, float] = {"m": 1.0, "cm": 100.0}          # file units per metre
@@ -61,6 +61,31 @@ def check_fps_units_names(out_fps: float | None = None, units: str = "m", names:
     if units not in UNITS:
         raise ValueError(f"units must be one of {', '.join(UNITS)}, got {units!r}")
     joint_names(names)
+
+
+def resampled_frames(n: int, src_fps: float, dst_fps: float) -> int:
+    """How many frames n frames at src_fps become at dst_fps: the duration's, rounded up so
+    that the end is included."""
+    if n < 2 or abs(src_fps - dst_fps) < 1e-9:
+        return n
+    return int(np.ceil((n - 1) / src_fps * dst_fps - 1e-6)) + 1
+
+
+def resample_rig(rig: Rig, src_fps: float, dst_fps: float) -> Rig:
+    """The rig at another frame rate over the same duration: root positions linearly,
+    rotations by slerp, keys at i / dst_fps up to the first at or after the end, which holds
+    the last pose (so no pose is dropped: ceil(duration * dst_fps) + 1 frames). Same rate:
+    unchanged."""
+    n = rig.frames
+    if n < 2 or abs(src_fps - dst_fps) < 1e-9:
+        return rig
+    pos = np.minimum(np.arange(resampled_frames(n, src_fps, dst_fps)) / dst_fps * src_fps, n - 1)
+    lo = np.clip(np.floor(pos + 1e-9).astype(int), 0, n - 1)
+    hi = np.clip(lo + 1, 0, n - 1)
+    w = np.clip(pos - lo, 0.0, 1.0)
+    root = rig.root[lo] * (1 - w[:, None]) + rig.root[hi] * w[:, None]
+    rot = slerp(rig.rotations[lo], rig.rotations[hi], np.broadcast_to(w[:, None], (len(w), sk.NUM_JOINTS)))
+    return Rig(offsets=rig.offsets, root=root, rotations=continuous(rot))
 
 
 def export_rigs(people: Sequence[np.ndarray], fps: float = sk.FPS, out_fps: float | None = None,
