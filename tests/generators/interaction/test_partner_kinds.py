@@ -125,3 +125,24 @@ def test_the_touched_part_is_read_from_the_prompt():
                          ("he touches her hand", "hand"), ("one pokes the other", "shoulder")]:
         s = read_script(prompt)
         assert s is not None and s.kind == "touch" and s.part == part, (prompt, s)
+
+
+def test_who_starts_is_read_from_the_roles_or_the_prompt():
+    roles = {"0": "a person runs away", "1": "a person runs after the other person"}
+    assert read_script("one person chases the other", roles).actor == 1               # the roles say so
+    assert read_script("the man runs away while the woman chases him").actor == 1     # response named first
+    assert read_script("one person is lying on the floor and the other helps them up").actor == 1
+    assert read_script("she is tapped on the shoulder by him").actor == 1
+    assert read_script("one person helps the other get up off the floor").actor == 0
+    assert read_script("she hands him a cup").actor == 0
+
+
+def test_a_pat_lifts_the_hand_off_and_back_while_it_stays_on(made):
+    from interplay.motion.checks import measures as m
+    from interplay.motion.checks.contact import hand_on
+    mo = made["one person pats the other on the back"][0]
+    actor = mo.plan["composition"]["script"]["actor"]
+    doer, other = (np.asarray(p, np.float64) for p in (mo.people[actor], mo.people[1 - actor]))
+    gap = hand_on(doer, other, m.frame_of(other), "back")
+    s, e = mo.plan["composition"]["timing"]["contact"]["contact"]
+    assert float(np.ptp(gap[s:e])) >= 0.015 and float(gap[s:e].max()) <= 0.05

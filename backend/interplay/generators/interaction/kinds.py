@@ -66,6 +66,9 @@ _VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_s
 _FIRST = ("one", "a", "the first")
 _FIRST_RESPONDS = {"follow": ("follow", "follows", "trail", "trails"),
                    "mirror": ("copy", "copies", "mirror", "mirrors", "imitate", "imitates", "mimic", "mimics")}
+# Kinds whose prompt may name the response first ("the man runs away while the woman chases
+# him", "she takes a cup from him"): the first-named person is then the one who responds.
+_RESPONSE_FIRST = ("help_up", "hand_over", "touch", "chase")
 # A touched part's words ("on the shoulder", "her arm"), for the parts of the touch entry.
 _PART_WORDS = {"shoulder": ("shoulder*",), "back": ("back",), "arm": ("arm", "arms", "elbow*", "wrist*", "forearm*"),
                "head": ("head", "hair", "forehead", "cheek"), "hand": ("hand", "hands", "palm")}
@@ -200,6 +203,10 @@ def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
             return who, f"roles: person {who} {verb} ('{texts[who]}'; the other: '{texts[1 - who]}')"
     if kind in _FIRST_RESPONDS and _first_responds(kind, prompt):
         return 1, f"person 1 {verb} (the prompt's first-named one responds)"
+    if kind in _RESPONSE_FIRST:
+        said = [words_rx(_RESPONDER[kind]).search(prompt), words_rx(_ACTOR[kind]).search(prompt)]
+        if said[0] and (said[1] is None or said[0].start() < said[1].start()):
+            return 1, f"person 1 {verb} (the prompt names the response first: '{said[0].group(0)}')"
     return 0, f"person 0 {verb} (the one the prompt names first)"
 
 
@@ -244,6 +251,13 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
     if kind in _RESPONDER:
         reasons.append(who)
     return Script(kind, actor, approach, held, tuple(reasons), part)
+
+
+def kind_checks(kind: str) -> list[dict]:
+    """The pair checks the catalogue names for a kind (its entry's `checks`, as run_check specs)."""
+    from interplay.catalogue.schema import specs
+    entry = next((a for a in catalogue().of_kind("interaction") if a.made_by.composition == kind), None)
+    return specs(entry) if entry is not None else []
 
 
 def why_not(prompt: str, encoder=None) -> str:

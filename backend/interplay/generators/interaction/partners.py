@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from interplay.catalogue.grammar import words_rx
 from interplay.generators.interaction import contacts as ct
 from interplay.generators.interaction import moves as mv
 from interplay.generators.interaction.bodies import facing_pair, on_shared, turn_to, yaw_of
@@ -35,6 +36,8 @@ UPPER = [J[n] for n in ("spine1", "spine2", "spine3", "neck", "head", "left_coll
 PARTS = ("shoulder", "back", "arm", "head", "hand")
 PULL_BACK_DEG = 12.0        # the helper leans back this far as the other rises
 TOUCH_M = {"head": (0.5, 0.56), "hand": (0.6, 0.7)}   # facing, pelvis to pelvis (else 0.6–0.7 m)
+PATS = ("pat", "pats", "patted", "patting", "tap", "taps", "tapped", "tapping")
+PAT_M, PAT_HZ = 0.03, 2.5   # a pat lifts the hand this far off, this often (it stays within 5 cm)
 DEPTH_CM = 2.5              # a touch deeper into the other's body is drawn again (bound: 3 cm)
 
 
@@ -214,7 +217,11 @@ def touch(c: Cast) -> list[np.ndarray]:
     if part == "hand":       # the other's hand comes up a little to meet it, as hands are taken
         d, o = _take_hand(d, o, hand, bt.weights(frames), float(rng.uniform(0.0, 0.08)))
     else:
-        goal = _touch_point(d, o, part, hand)
+        goal, normal = _touch_point(d, o, part, hand)
+        if words_rx(PATS).search(c.texts[doer]):     # a pat or a tap: the hand lifts off and back
+            t = (np.arange(frames) - bt.start) / sk.FPS
+            inside = (np.arange(frames) >= bt.start) & (np.arange(frames) < bt.end)
+            goal = goal + (PAT_M * 0.5 * (1.0 - np.cos(2 * np.pi * PAT_HZ * t)) * inside)[:, None] * normal
         d = ct.hand_to(d, hand, goal, bt.weights(frames), pl.pole(d, hand, 0.2, 0.3, 0.05))
     depth = pair_bounds(d, o, "hands")["depth_cm"]
     if depth > DEPTH_CM:
@@ -241,10 +248,10 @@ def _take_hand(d: np.ndarray, o: np.ndarray, hand: str, w: np.ndarray, rise: flo
     return d, o
 
 
-def _touch_point(d: np.ndarray, o: np.ndarray, part: str, hand: str) -> np.ndarray:
+def _touch_point(d: np.ndarray, o: np.ndarray, part: str, hand: str) -> tuple[np.ndarray, np.ndarray]:
     """Where the centre of `hand` goes (T, 3): on the surface of the partner's part, the
-    hand's sphere just touching the part's (1 cm into it); a limb on the side nearest the hand
-    (part: shoulder, arm, head or back)."""
+    hand's sphere just touching the part's (1 cm into it), and the outward direction there (T, 3);
+    a limb on the side nearest the hand (part: shoulder, arm, head or back)."""
     toward = (d[:, sk.PELVIS] - o[:, sk.PELVIS]) * XZ
     toward /= np.maximum(np.linalg.norm(toward, axis=1, keepdims=True), 1e-9)
     near = d[:, J[f"{hand}_shoulder"]]
@@ -259,7 +266,7 @@ def _touch_point(d: np.ndarray, o: np.ndarray, part: str, hand: str) -> np.ndarr
     else:                    # the upper back, from behind
         (centre, radius), direction = _sphere(o, J["spine3"]), -pl.axes(o)[0] + 0.2 * UP
     direction = direction / np.maximum(np.linalg.norm(direction, axis=-1, keepdims=True), 1e-9)
-    return centre + (radius + HAND_RADIUS_M - 0.01) * direction
+    return centre + (radius + HAND_RADIUS_M - 0.01) * direction, direction
 
 
 def _sphere(o: np.ndarray, joint: int) -> tuple[np.ndarray, float]:
