@@ -52,7 +52,7 @@ def test_the_packaged_catalogue_validates_and_names_real_checks():
     for a in cat.action:
         for spec in specs(a, count=2, side="left"):
             assert spec["check"] in CHECKS, (a.name, spec)
-        if a.counts:
+        if a.counts and not a.made_by.primitive:    # captures are counted by their events
             assert a.counts_as in ("jump", "squat", "kick", "punch", "step"), a.name
 
 

@@ -67,6 +67,9 @@ ONE_SAID = re.compile(r"\b(?:one|a\s+single)\s+[a-z-]+", re.IGNORECASE)     # "o
 COUNT_SAID = re.compile(rf"\b(?:once|twice|thrice|{_NUMBER}\s+times?)\b", re.IGNORECASE)
 
 
+DEGREES = re.compile(r"(\d+(?:\.\d+)?)\s*(?:°|deg\b|degrees?\b)")      # "look up 40 degrees"
+
+
 def number(word: str) -> int | None:
     w = " ".join(word.lower().split())
     return int(w) if w.isdigit() else {"twice": 2, "thrice": 3, **NUMBERS, **VAGUE}.get(w)

@@ -18,7 +18,8 @@ DOC = Path(__file__).resolve().parents[3] / "docs" / "actions.md"
 KIND_TITLES = {
     "whole": "Whole-body actions", "travel": "Ways of getting somewhere", "part": "Arm and leg actions",
     "gesture": "Named gestures and moves", "pose": "Named poses (can be held)",
-    "manner": "Manners (how it is done)", "interaction": "Two-person interactions",
+    "manner": "Manners (how it is done)", "move": "Moves built from body-part primitives",
+    "interaction": "Two-person interactions",
 }
 
 

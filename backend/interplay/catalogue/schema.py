@@ -12,7 +12,8 @@ name it in a prompt (a trailing `*` takes any ending: "sprint*" is sprint, sprin
 sentences the text encoder compares prompts with. `kind` says how the planner treats it:
 travel / whole / part / light are motion verbs (a light verb carries no motion itself: "does",
 "performs"), gesture and pose are named movements rewritten to their `text`, interaction is a
-two-person kind, manner a way of doing it ("slowly", "tired"). `made_by` says how the studio makes it; `checks` name the benchmark's checks
+two-person kind, manner a way of doing it ("slowly", "tired"), move a movement the studio
+builds from body-part primitives when the words are near its descriptions ("taps the chest"). `made_by` says how the studio makes it; `checks` name the benchmark's checks
 (`motion/checks/named.py`) that confirm it on the motion.
 """
 
@@ -22,7 +23,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-Kind = Literal["travel", "whole", "part", "light", "gesture", "pose", "interaction", "manner"]
+Kind = Literal["travel", "whole", "part", "light", "gesture", "pose", "interaction", "manner", "move"]
 Part = Literal["arm", "arms", "leg", "legs", "head", "body"]
 Posture = Literal["standing", "sitting", "lying", "kneeling", "squatting", "crawling", "all_fours",
                   "prone", "supine"]
@@ -39,8 +40,9 @@ class MadeBy(BaseModel):
 
     @property
     def how(self) -> str:
-        return ("composed" if self.composition else "primitive" if self.primitive else
-                "capture" if self.families else "capture")
+        # captured families come first: a primitive only serves an entry no capture makes
+        return ("composed" if self.composition else "capture" if self.families else
+                "primitive" if self.primitive else "capture")
 
 
 class Check(BaseModel):

@@ -1,6 +1,6 @@
 """GET /api/actions: what the studio knows how to make (the catalogue), for the prompt box's
 suggestions and for anyone asking; `kind` filters (whole, travel, part, gesture, pose, manner,
-interaction)."""
+move, interaction)."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from fastapi import APIRouter, Query
 from interplay.catalogue.listing import rows
 
 router = APIRouter(prefix="/api", tags=["catalogue"])
-KindName = Literal["whole", "travel", "part", "gesture", "pose", "manner", "interaction"]
+KindName = Literal["whole", "travel", "part", "gesture", "pose", "manner", "move", "interaction"]
 
 
 @router.get("/actions")

@@ -11,10 +11,9 @@ but the head stays exactly where it was.
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
+from interplay.catalogue.grammar import DEGREES
 from interplay.generators.primitives.head import pitch_yaw
 from interplay.generators.primitives.registry import PRIMITIVES, build, find
 from interplay.generators.retrieval.intent import count_of
@@ -25,7 +24,6 @@ from interplay.text.encoder import Encoder
 HEAD_PRIMITIVES = tuple(n for n, p in PRIMITIVES.items() if p.parts == ("head",))
 MIN_SIMILARITY = 0.25      # below this the words are not about the head at all …
 MARGIN = 0.05              # … nor when another part's primitive fits them this much better
-DEGREES = re.compile(r"(\d+(?:\.\d+)?)\s*(?:°|deg\b|degrees?\b)")
 
 
 def head_edit(joints: np.ndarray, prompt: str, frames: tuple[int, int] | None,

@@ -1,5 +1,6 @@
-"""The primitives by name (`PRIMITIVES`, from the plain data table `table.PRIMITIVE_TABLE`),
-each found from its text through the MiniLM encoder (`find`: cosine similarity between the
+"""The primitives by name (`PRIMITIVES`: how each is built, from `table.PRIMITIVE_TABLE`; the
+phrasings it is found by, from the catalogue's entries made by it), each found from its text
+through the MiniLM encoder (`find`: cosine similarity between the
 text and each primitive's phrasings, the best phrasing's score per primitive; no pattern per
 phrase), and built on its base posture (`build`: count, seconds, side and the table's fixed
 parameters). Builder names are stable: `BUILDERS` maps each to its pure function.
@@ -16,6 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from interplay.catalogue.load import catalogue
 from interplay.generators.primitives.body import axes
 from interplay.generators.primitives.contacts import hand_contacts
 from interplay.generators.primitives.exercise import arm_circles, jumping_jacks, push_ups, sit_ups
@@ -54,8 +56,18 @@ class Primitive:
         return seconds_for(count, self.seconds) if self.counts else self.seconds
 
 
+def _descriptions(name: str) -> tuple[str, ...]:
+    """The phrasings a primitive is found by: the descriptions of every catalogue entry made
+    by it (`made_by.primitive`), in catalogue order."""
+    out: dict[str, None] = {}
+    for a in catalogue().action:
+        if a.made_by.primitive == name:
+            out.update(dict.fromkeys(a.descriptions))
+    return tuple(out)
+
+
 PRIMITIVES: dict[str, Primitive] = {
-    row["name"]: Primitive(name=row["name"], descriptions=tuple(row["descriptions"]),
+    row["name"]: Primitive(name=row["name"], descriptions=_descriptions(row["name"]),
                            posture=row["posture"], parts=tuple(row["parts"]),
                            counts=bool(row["counts"]), seconds=float(row["seconds"]),
                            builder=row["builder"], params=dict(row["params"]))

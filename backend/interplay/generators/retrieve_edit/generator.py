@@ -126,6 +126,8 @@ class RetrieveEditGenerator:
         chunks = [people for _, people in self.retrieval.stream(req, plan)]
         people = [np.concatenate([c[i] for c in chunks]).astype(np.float64)
                   for i in range(plan.persons)]
+        if plan.persons == 1:          # primitive segments first: the arm poses go over them too
+            people[0] = lay(people[0], plan)
         for seg in plan.segments:
             legs, _ = knee_lifts(seg)
             if legs and not (seg.retrieval is not None and seg.retrieval.mode == "pair"):
@@ -139,8 +141,6 @@ class RetrieveEditGenerator:
         acts, _ = _actions(plan)
         if acts:
             people[0] = apply(people[0], acts)
-        if plan.persons == 1:
-            people[0] = lay(people[0], plan)
         return [on_floor(p).astype(np.float32) for p in people]
 
     def stream(self, req: Request, plan: GenerationPlan) -> Iterator[tuple[int, list[np.ndarray]]]:

@@ -39,7 +39,9 @@ EASE = 8                    # frames eased from the motion's pose into the primi
 def _entry_primitive(seg: GenerationSegment) -> str | None:
     cov = seg.coverage
     entry = catalogue().get(cov.entry) if cov is not None and cov.entry else None
-    name = entry.made_by.primitive if entry is not None else None
+    # an entry with captured families of its own (squats) is made from them; its primitive
+    # serves only words nothing else covers
+    name = entry.made_by.primitive if entry is not None and not entry.made_by.families else None
     return name if name in PRIMITIVES else None
 
 
