@@ -1,6 +1,7 @@
 """The real single-person clips a scene is built from, found in the retrieval index's clips:
 quiet standing runs and level walks (`pair.bases`), walks backwards, waves, bows and arm
-movements done in place. numpy only (plus the index's text encoder).
+movements done in place, punches and kicks thrown in place (sparring), runs (a chase) and
+get-ups from the floor (helping someone up). numpy only (plus the index's text encoder).
 
 Each family is the clips whose label names the action and whose motion shows it (a wave
 clip must contain a wave by `checks.measures.waves`, a bow a bow, an arm clip arms that keep
