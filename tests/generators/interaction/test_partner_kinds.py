@@ -55,6 +55,13 @@ def test_every_kind_has_one_catalogue_entry_in_reading_order():
     assert kinds.index("chase") < kinds.index("follow") and kinds.index("touch") < kinds.index("follow")
 
 
+def test_every_entrys_examples_are_read_as_its_kind_by_their_words():
+    from interplay.generators.interaction.kinds import keyword_kind
+    for a in catalogue().of_kind("interaction"):
+        for example in a.examples:
+            assert keyword_kind(example)[0] == a.made_by.composition, (a.name, example)
+
+
 @pytest.mark.parametrize("prompt,seconds,kind,part,extra", ASKED, ids=[a[0] for a in ASKED])
 def test_the_kind_is_composed_and_passes_its_checks(made, prompt, seconds, kind, part, extra):
     for seed, mo in zip(SEEDS, made[prompt]):
