@@ -23,7 +23,7 @@ from typing import Callable
 import numpy as np
 
 from interplay.generators.base import Generator, Request
-from interplay.generators.interaction.kinds import read_script
+from interplay.generators.interaction.kinds import kind_checks, read_script
 from interplay.generators.plan import GenerationPlan
 from interplay.generators.retrieval.couple import asks_spin
 from interplay.generators.retrieval.intent import intent
@@ -82,7 +82,8 @@ def interaction_specs(plan: GenerationPlan) -> list[dict]:
             key = "leg" if it.action == "kick" else "hand"
             return [{"check": it.action, key: it.side or "any", **n, "person": "both"}]
         return []
-    out = [dict(s) for s in KIND_CHECKS.get(kind, [])]
+    # the kinds composed since the table was written take their checks from the catalogue
+    out = [dict(s) for s in KIND_CHECKS.get(kind) or kind_checks(kind)]
     if held:
         out.insert(0, {"check": "hands_held"})
     if approach and kind != "approach":
