@@ -35,7 +35,8 @@ def cmd_export(args) -> int:
         write_bytes(args.out, write_glb([p.astype("float64") for p in motion.people], fps=motion.fps,
                                         mesh=not args.no_mesh, name=motion.prompt or "motion",
                                         out_fps=args.fps or motion.fps, units=args.units or "m",
-                                        names=args.names or "smpl"))
+                                        names=args.names or "smpl",
+                                        leaves=[motion.leaves_of(k) for k in range(len(motion.people))]))
         print(f"wrote {args.out}", file=sys.stderr)
         return 0
     if args.format == "json":
@@ -50,7 +51,7 @@ def cmd_export(args) -> int:
         people = [p.astype("float64") for p in motion.people]
         text = write_bvh(people[args.person], fps=motion.fps, out_fps=args.fps or motion.fps,
                          units=args.units or "m", up=args.up or "y", names=args.names or "smpl",
-                         floor=floor_height(people))
+                         floor=floor_height(people), leaves=motion.leaves_of(args.person))
     write_text(args.out, text)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0

@@ -15,6 +15,14 @@ relative to its parent, the pelvis's global, identity at rest; from `rig.solve_r
 and root are rounded to 1 µm and quaternions to 1e-6, so forward kinematics of the rig gives
 the joints back well within 1 mm. `from_json` reads both versions (a version-1 file has no
 "schema"); the joints stay the motion's truth, the rig is derived from them.
+
+Either version may give a person explicit rotations of the joints the 22 positions do not
+turn (the leaves: "head", "left_wrist", "right_wrist"): per person "leaves": {"head": [[w, x,
+y, z] × T], …} (local unit quaternions, as the rig's; e.g. a head edit's nod), which every
+export (BVH, GLB, the rig of version 2) uses in place of the rotations it would derive
+(`rig.solve_rig(..., leaves=…)`). Absent when unset; files without it read and export as
+before. An edit stores them in its plan (plan["leaves"], one object per person), which
+`Motion` lifts into the people's "leaves" (`leaves_in`).
 """
 
 from __future__ import annotations
@@ -23,6 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from interplay.motion.rig.leaves import LEAVES
 from interplay.motion.skeleton import FPS, JOINT_NAMES, NUM_JOINTS, PARENTS, SKELETON_NAME
 
 DECIMALS = 4  # metres → 0.1 mm
@@ -60,6 +69,43 @@ def validate_people(people: list) -> list[np.ndarray]:
     return out
 
 
+def validate_leaves(leaves: object, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
+    """Per-person explicit leaf rotations as float64 arrays (T, 4), checked: one object (or
+    None) per person, names among LEAVES, finite (T, 4) quaternions."""
+    if not isinstance(leaves, (list, tuple)) or len(leaves) != persons:
+        raise ValueError(f"'leaves' must give one object per person ({persons})")
+    out = []
+    for i, given in enumerate(leaves):
+        if given is None:
+            given = {}
+        if not isinstance(given, dict):
+            raise ValueError(f"person {i}: 'leaves' must be an object of joint → rotations")
+        person = {}
+        for name, q in given.items():
+            if name not in LEAVES:
+                raise ValueError(f"person {i}: leaves are {', '.join(LEAVES)}, got {name!r}")
+            try:
+                a = np.asarray(q, dtype=np.float64)
+            except (ValueError, TypeError):
+                raise ValueError(f"person {i}: leaves[{name!r}] is not a T×4 array") from None
+            if a.shape != (frames, 4) or not np.isfinite(a).all() or (np.linalg.norm(a, axis=-1) < 1e-6).any():
+                raise ValueError(f"person {i}: leaves[{name!r}] must be {frames}×4 finite "
+                                 f"quaternions (w, x, y, z), got shape {a.shape}")
+            person[name] = a
+        out.append(person)
+    return out
+
+
+def leaves_in(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
+    """The per-person leaf rotations an edit stored in a plan (plan["leaves"]); empty objects
+    where it gives none or ones that do not fit the motion (the plan is only their carrier)."""
+    given = (plan or {}).get("leaves") if isinstance(plan, dict) else None
+    try:
+        return validate_leaves(given, persons, frames)
+    except ValueError:
+        return [{} for _ in range(persons)]
+
+
 @dataclass
 class Motion:
     people: list[np.ndarray]            # one (T, 22, 3) float32 array per person, metres, Y up
@@ -69,11 +115,25 @@ class Motion:
     highlights: dict | None = None
     prompt: str = ""
     seed: int | None = None
+    # Per person, explicit local rotations (T, 4) of head / wrists (see the module); None: none.
+    leaves: list | None = None
 
     def __post_init__(self):
         self.people = validate_people(self.people)
         if self.fps != FPS:
             raise ValueError(f"motions are {FPS} fps, got {self.fps}")
+        if isinstance(self.plan, dict) and "leaves" in self.plan:
+            if self.leaves is None:
+                self.leaves = leaves_in(self.plan, len(self.people), self.frames)
+            self.plan = {k: v for k, v in self.plan.items() if k != "leaves"}
+        if self.leaves is not None:
+            self.leaves = validate_leaves(self.leaves, len(self.people), self.frames)
+            if not any(self.leaves):
+                self.leaves = None
+
+    def leaves_of(self, person: int) -> dict[str, np.ndarray]:
+        """Person `person`'s explicit leaf rotations (empty when none)."""
+        return dict(self.leaves[person]) if self.leaves is not None else {}
 
     @property
     def frames(self) -> int:
@@ -99,10 +159,14 @@ class Motion:
             floor = floor_height(people)
             d = {"schema": SCHEMA_V2, **d, "joint_names": list(JOINT_NAMES),
                  "parents": list(PARENTS), "rig_convention": RIG_CONVENTION}
-            for person, joints in zip(d["people"], people):
-                r = solve_rig(joints, floor=floor)
+            for k, (person, joints) in enumerate(zip(d["people"], people)):
+                r = solve_rig(joints, floor=floor, leaves=self.leaves_of(k))
                 person["rig"] = {key: np.round(value, RIG_DECIMALS).tolist() for key, value in
                                  (("offsets", r.offsets), ("root", r.root), ("rotations", r.rotations))}
+        for k, person in enumerate(d["people"]):
+            if self.leaves_of(k):
+                person["leaves"] = {name: np.round(q, RIG_DECIMALS).tolist()
+                                    for name, q in self.leaves_of(k).items()}
         if self.highlights is not None:
             d["highlights"] = self.highlights
         if self.prompt:
@@ -127,13 +191,14 @@ class Motion:
         people = d.get("people")
         if not isinstance(people, list):
             raise ValueError("motion JSON needs 'people': a list of {'joints': [...]}")
-        joints = []
+        joints, leaves = [], []
         for i, p in enumerate(people):
             if not isinstance(p, dict) or "joints" not in p:
                 raise ValueError(f"person {i}: expected an object with 'joints'")
             if schema == SCHEMA_V2 and not isinstance(p.get("rig"), dict):
                 raise ValueError(f"person {i}: a {SCHEMA_V2} motion needs each person's 'rig'")
             joints.append(p["joints"])
+            leaves.append(p.get("leaves"))
         for key in ("plan", "metrics"):
             if not isinstance(d.get(key) or {}, dict):
                 raise ValueError(f"'{key}' must be an object")
@@ -144,4 +209,5 @@ class Motion:
         if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)):
             raise ValueError(f"'seed' must be an integer, got {seed!r}")
         return cls(people=joints, plan=d.get("plan") or {}, metrics=d.get("metrics") or {},
-                   highlights=highlights, prompt=str(d.get("prompt") or ""), seed=seed)
+                   highlights=highlights, prompt=str(d.get("prompt") or ""), seed=seed,
+                   leaves=leaves if any(x is not None for x in leaves) else None)

@@ -4,6 +4,11 @@ parent's plan plus this edit appended to `plan["edits"]`), metrics and highlight
 
 A trajectory-only edit (a drawn path or preset for one person) needs no model.
 
+An edit that gives the export explicit leaf rotations (a head edit's head turns, under its
+entry's "leaves") stores them in the plan, plan["leaves"] (one object per person, read by
+`motion.leaves_in`), over the parent's, which are kept only while the edit left the trunk,
+neck and head where they were (the rotations are the head's on the neck).
+
 Errors: ValueError for a bad request (the caller answers 422 / exit 2), EditUnavailable when
 the generator cannot edit (503)."""
 
@@ -12,10 +17,17 @@ from __future__ import annotations
 import numpy as np
 
 from interplay.generators.base import Editor, EditUnavailable
+from interplay.motion import skeleton as sk
 from interplay.motion.metrics import clip_metrics
+from interplay.motion.motion import leaves_in
 from interplay.pipeline.highlights import highlight_lists
 from interplay.pipeline.motion_json import plain
 from interplay.store import MotionRepository, StoredMotion
+
+# The joints whose rotations the leaves' rotations are relative to (the head's on the neck,
+# its twist from the chest): a parent's leaves are kept while an edit leaves them in place.
+_CARRIERS = [sk.JOINT_INDEX[n] for n in ("spine3", "neck", "head", "left_collar", "right_collar",
+                                         "left_elbow", "right_elbow", "left_wrist", "right_wrist")]
 
 
 def edit_joints(generator, people: list[np.ndarray], plan: dict | None, prompt: str | None,
@@ -33,8 +45,15 @@ def edit_joints(generator, people: list[np.ndarray], plan: dict | None, prompt: 
                                  (frames[0], frames[1]) if frames is not None else None, seed,
                                  context=prompt or None)
     out = edit.joints.astype(np.float32)
+    given = entry.pop("leaves", None) or {}
     plan = dict(plan or {})
     plan["edits"] = list(plan.get("edits") or []) + [entry]
+    parent = leaves_in(plan, 1, len(joints))[0]
+    plan.pop("leaves", None)
+    same = len(out) == len(joints) and np.abs(out[:, _CARRIERS] - joints[:, _CARRIERS]).max() < 1e-3
+    leaves = {**(parent if same else {}), **{k: np.asarray(v) for k, v in given.items()}}
+    if leaves:
+        plan["leaves"] = [{k: np.round(v, 6).tolist() for k, v in leaves.items()}]
     metrics = plain(clip_metrics([out.astype(np.float64)]))
     return out, plan, metrics, entry["seed"]
 

@@ -41,10 +41,11 @@ def pitch_yaw(joints: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.degrees(np.arctan2(-c, u)), np.degrees(np.arctan2(a, c))
 
 
-def turn_head(joints: np.ndarray, pitch_deg: np.ndarray, yaw_deg: np.ndarray) -> np.ndarray:
-    """Joints with the head joint turned about the neck: pitched up by `pitch_deg` (about the
-    trunk's left axis), then turned left by `yaw_deg` (about pelvis → neck); (T,) each."""
-    out = np.asarray(joints, dtype=np.float64).copy()
+def head_turns(joints: np.ndarray, pitch_deg: np.ndarray, yaw_deg: np.ndarray) -> np.ndarray:
+    """The world rotations (T, 3, 3) `turn_head` turns the neck → head bone by: a pitch up by
+    `pitch_deg` (about the trunk's left axis), then a turn left by `yaw_deg`; (T,) each. An
+    export's head leaf turns by the same (`primitives.edit.head_leaf`)."""
+    out = np.asarray(joints, dtype=np.float64)
     left, up, chest = trunk_axes(out)
     v = out[:, sk.HEAD] - out[:, sk.NECK]
     # A turn is about an axis leant back from the bone by at least TURN_CONE_DEG, so that the
@@ -55,7 +56,14 @@ def turn_head(joints: np.ndarray, pitch_deg: np.ndarray, yaw_deg: np.ndarray) ->
     axis = np.cos(back) * up - np.sin(back) * chest
     rp = rotation(left, -np.radians(pitch_deg))       # + about left tips the head forward
     ry = rotation(axis, np.radians(yaw_deg))
-    v = np.einsum("tij,tj->ti", ry @ rp, v)
+    return ry @ rp
+
+
+def turn_head(joints: np.ndarray, pitch_deg: np.ndarray, yaw_deg: np.ndarray) -> np.ndarray:
+    """Joints with the head joint turned about the neck: pitched up by `pitch_deg` (about the
+    trunk's left axis), then turned left by `yaw_deg` (about pelvis → neck); (T,) each."""
+    out = np.asarray(joints, dtype=np.float64).copy()
+    v = np.einsum("tij,tj->ti", head_turns(out, pitch_deg, yaw_deg), out[:, sk.HEAD] - out[:, sk.NECK])
     out[:, sk.HEAD] = out[:, sk.NECK] + v
     return out
 
@@ -83,6 +91,17 @@ def head(base: np.ndarray, action: str, count: int = 1, degrees: float | None = 
     """The base (T, 22, 3) with the head doing `action` over frames [start, end): a look held
     (eased in and out), `count` nods (down and back up) or `count` shakes (left, right, back),
     or a look at `point` (3,) or (T, 3) world."""
+    j = np.asarray(base, dtype=np.float64)
+    pitch, yaw = head_angles(j, action, count, degrees, point, start, end)
+    out = j.copy()
+    out[start:len(pitch) + start] = turn_head(j[start:len(pitch) + start], pitch, yaw)
+    return out
+
+
+def head_angles(base: np.ndarray, action: str, count: int = 1, degrees: float | None = None,
+                point: np.ndarray | None = None, start: int = 0, end: int | None = None
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """(pitch, yaw) (end - start,) in degrees: the turns `head` gives the frames [start, end)."""
     if action not in ACTIONS:
         raise ValueError(f"unknown head action {action!r}; expected one of {ACTIONS}")
     j = np.asarray(base, dtype=np.float64)
@@ -110,6 +129,4 @@ def head(base: np.ndarray, action: str, count: int = 1, degrees: float | None = 
         cycle, ph = phase(t, count)
         yaw = np.where(cycle >= 0, deg * np.sin(2 * np.pi * ph), 0.0)
         pitch = zero
-    out = j.copy()
-    out[start:end] = turn_head(sub, pitch, yaw)
-    return out
+    return pitch, yaw

@@ -18,6 +18,7 @@ Blender) and joint names (SMPL's, or Mixamo-style for rigs that map bones by nam
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
@@ -338,7 +339,7 @@ def check_preset(out_fps: float | None = None, units: str = "m", up: str = "y",
 
 def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | None = None, *,
               out_fps: float | None = None, units: str = "m", up: str = "y", names: str = "smpl",
-              floor: float | None = None) -> str:
+              floor: float | None = None, leaves: Mapping[str, np.ndarray] | None = None) -> str:
     """One person's joints (T, 22, 3) (metres, Y up, `fps` frames a second) → BVH text: our 22
     joints as a standard hierarchy (6 channels on the root, 3 rotation channels elsewhere,
     End Sites at head, wrists and toes), rest pose = the offsets (fitted from the motion when
@@ -346,7 +347,8 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
     goes under, for two people the shared one). Presets: out_fps (default fps; resampled over
     the same duration keeping the last pose, root linearly, rotations by slerp), units "m" or
     "cm", up "y" or "z", names "smpl" or "mixamo". Re-reading reproduces joints that lie on
-    those bone lengths, in those units and axes, up to the floor pass's lift of the root."""
+    those bone lengths, in those units and axes, up to the floor pass's lift of the root.
+    leaves: explicit head / wrist rotations (`Motion.leaves_of`), in place of the derived."""
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or joints.shape[0] < 1:
         raise ValueError(f"joints must be (T, {sk.NUM_JOINTS}, 3) with T ≥ 1, got {joints.shape}")
@@ -360,7 +362,7 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
         if offsets.shape != (sk.NUM_JOINTS, 3):
             raise ValueError(f"offsets must be ({sk.NUM_JOINTS}, 3), got {offsets.shape}")
     rate = fps if out_fps is None else float(out_fps)
-    (rig,) = export_rigs([joints], fps, rate, [offsets], floor, body="joints")
+    (rig,) = export_rigs([joints], fps, rate, [offsets], floor, body="joints", leaves=[leaves])
     local, root, offs = rig.matrices(), rig.root, rig.offsets
     ends = end_sites(offs)
     if up == "z":

@@ -20,7 +20,7 @@ rest pose facing +Z; the person's left is +X.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -247,14 +247,16 @@ def rigs_glb(rigs: Sequence[Rig], fps: float = sk.FPS, *, mesh: bool = True,
 
 def write_glb(people: Sequence[np.ndarray], fps: float = sk.FPS, *, mesh: bool = True,
               name: str = "motion", out_fps: float | None = None, units: str = "m",
-              names: str = "smpl") -> bytes:
+              names: str = "smpl", leaves: Sequence[Mapping[str, np.ndarray] | None] | None = None
+              ) -> bytes:
     """The GLB of a motion: people (T, 22, 3) each at fps, as `presets.export_rigs` writes
     them (each on the rest offsets of their own motion, all over one floor, no hand, knee or
-    foot under it, resampled to out_fps keeping the last pose), in units with names."""
+    foot under it, resampled to out_fps keeping the last pose, with each person's explicit
+    head / wrist rotations `leaves` where given), in units with names."""
     check_fps_units_names(out_fps, units, names)
     people = [np.asarray(p, np.float64) for p in people]
     rate = fps if out_fps is None else float(out_fps)
-    return rigs_glb(export_rigs(people, fps, rate), rate, mesh=mesh, name=name, units=units, names=names)
+    return rigs_glb(export_rigs(people, fps, rate, leaves=leaves), rate, mesh=mesh, name=name, units=units, names=names)
 
 
 def humanoid_glb(offsets: np.ndarray = sk.REST_OFFSETS) -> bytes:

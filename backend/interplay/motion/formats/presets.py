@@ -13,7 +13,7 @@ bones by name), with Mixamo's end bones (HeadTop_End, LeftToe_End, …) at the l
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -90,18 +90,21 @@ def resample_rig(rig: Rig, src_fps: float, dst_fps: float) -> Rig:
 
 def export_rigs(people: Sequence[np.ndarray], fps: float = sk.FPS, out_fps: float | None = None,
                 offsets: Sequence[np.ndarray | None] | None = None,
-                floor: float | None = None, body: str = "mesh") -> list[Rig]:
+                floor: float | None = None, body: str = "mesh",
+                leaves: Sequence[Mapping[str, np.ndarray] | None] | None = None) -> list[Rig]:
     """Each person's rig as the exports write it: `solve_rig` (head and wrists turned, toes
     and hands pitched off the floor), resampled to out_fps keeping the last pose, then
     `floor.floor_pass` (lifted where a hand, knee or foot of the file's body — "mesh" for the
     GLB, "joints" for the BVH — would still be under it). floor: the
-    people's one ground (default: `kinematics.floor_height` of them all)."""
+    people's one ground (default: `kinematics.floor_height` of them all). leaves: per person,
+    explicit head / wrist rotations (`Motion.leaves`), at the motion's rate."""
     people = [np.asarray(p, np.float64) for p in people]
     ground = floor_height(people) if floor is None else float(floor)
     rate = fps if out_fps is None else float(out_fps)
     out = []
     for k, joints in enumerate(people):
-        rig = solve_rig(joints, None if offsets is None else offsets[k], fps=fps, floor=ground)
+        rig = solve_rig(joints, None if offsets is None else offsets[k], fps=fps, floor=ground,
+                        leaves=None if leaves is None else leaves[k])
         # Lifted after resampling, so that no interpolated frame dips either.
         out.append(floor_pass(resample_rig(rig, fps, rate), ground, body)[0])
     return out
