@@ -50,7 +50,9 @@ def test_a_bad_share_link_gets_the_page_with_a_404_status(client, motion_id):
 def test_json_export_round_trips_through_motion(client, two_person):
     r = client.get(f"/api/motions/{two_person}/export?format=json")
     assert r.status_code == 200
-    assert f'filename="interplay-{two_person}.json"' in r.headers["content-disposition"]
+    # interplay-<prompt words>-<id>.<ext> (api/filenames.py)
+    assert f'-{two_person}.json"' in r.headers["content-disposition"]
+    assert 'filename="interplay-' in r.headers["content-disposition"]
     motion = Motion.from_json(r.json())
     stored = client.get(f"/api/motions/{two_person}").json()
     assert motion.frames == 40 and len(motion.people) == 2 and motion.seed == 11
@@ -81,12 +83,12 @@ def test_glb_export_is_one_binary_glb_for_both_people(client, two_person):
     import pygltflib
     r = client.get(f"/api/motions/{two_person}/export?format=glb")
     assert r.status_code == 200 and r.headers["content-type"] == "model/gltf-binary"
-    assert f'filename="interplay-{two_person}.glb"' in r.headers["content-disposition"]
+    assert f'-{two_person}.glb"' in r.headers["content-disposition"]
     doc = pygltflib.GLTF2.load_from_bytes(r.content)
     assert len(doc.skins) == len(doc.meshes) == 2 and len(doc.animations) == 1
     bare = client.get(f"/api/motions/{two_person}/export", params={"format": "glb", "mesh": "false"})
     assert bare.status_code == 200 and len(bare.content) < len(r.content) / 2
-    assert f'filename="interplay-{two_person}-skeleton.glb"' in bare.headers["content-disposition"]
+    assert f'-{two_person}-skeleton.glb"' in bare.headers["content-disposition"]
     assert pygltflib.GLTF2.load_from_bytes(bare.content).meshes == []
 
 

@@ -58,9 +58,11 @@ def names_source(names, followed_by=()) -> str:
 # --- numbers and counts ---
 NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
            "eight": 8, "nine": 9, "ten": 10}
-_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|a\s+few|several|a\s+couple(?:\s+of)?)"
-# Counts said without a number: a few and several are three, a couple two.
+_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+# Repetitions said without a number ("a few times"): a few and several are three, a couple two
+# ("a few steps" asks no exact count).
 VAGUE = {"a few": 3, "several": 3, "a couple": 2, "a couple of": 2}
+_VAGUE = r"(?:a\s+few|several|a\s+couple(?:\s+of)?)"
 ONCE = re.compile(r"\bonce\b|\bone\s+time\b|\ba\s+single\b")
 # A count said in words: "once", "twice", "three times", "one time".
 ONE_SAID = re.compile(r"\b(?:one|a\s+single)\s+[a-z-]+", re.IGNORECASE)     # "one backflip"
@@ -79,7 +81,7 @@ def times_rx(nouns) -> re.Pattern:
     """"twice", "three times", "3 jumps", "four quick hops": a number and what it counts
     (`nouns`: the counted actions' plural forms)."""
     plural = "|".join(sorted({re.escape(n) for n in nouns}, key=len, reverse=True)) or "(?!x)x"
-    return rx(rf"\b(twice|thrice)\b|\b({_NUMBER})\s+(?:times\b|(?:\w+\s+)?(?:{plural})\b)")
+    return rx(rf"\b(twice|thrice)\b|\b({_NUMBER}|{_VAGUE}(?=\s+times\b))\s+(?:times\b|(?:\w+\s+)?(?:{plural})\b)")
 
 
 def one_rx(nouns) -> re.Pattern:
