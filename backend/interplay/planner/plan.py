@@ -30,7 +30,7 @@ from interplay.planner.manner.travel import direction, untangle
 from interplay.planner.pair.actors import actors as who_acts
 from interplay.planner.pair.roles import exchange, exchange_steps
 from interplay.planner.resolve import coverage_of, not_understood, resolve
-from interplay.planner.schema import Plan
+from interplay.planner.schema import MAX_REPEAT, Plan
 from interplay.planner.segments import MAX_SECONDS, Step, timed
 from interplay.planner.trajectory_text import parse as parse_trajectory
 from interplay.planner.verbs import gerund, lookup
@@ -196,6 +196,11 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
         return IDLE.get(postures[person], IDLE["standing"])
 
     for clause in clauses:
+        if clause.repeat > MAX_REPEAT:           # a count the plan cannot hold: capped, said
+            reasons.append(f"count: {clause.repeat} times is more than one segment holds; "
+                           f"{MAX_REPEAT} are planned")
+            clause.text = clause.text.replace(f"{clause.repeat} times", f"{MAX_REPEAT} times")
+            clause.repeat = MAX_REPEAT
         if steps:
             _other_side(clause, steps[-1].action, reasons)
         if steps and _CLOCK_TURN.match(clause.text) and steps[-1].action.verb is not None \

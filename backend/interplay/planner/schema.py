@@ -45,6 +45,7 @@ Shape = Literal["line", "arc", "circle", "zigzag", "s_curve", "heart", "figure_e
 SHAPES: tuple[Shape, ...] = get_args(Shape)
 PARTS = ("left_arm", "right_arm", "left_leg", "right_leg", "head")
 MAX_SEGMENTS = 16
+MAX_REPEAT = 20         # repetitions one segment holds ("claps 21 times" is planned as 20, said so)
 
 # The cost bounds of a trajectory, whatever its form (drawn points, preset, waypoints, an LLM's
 # plan): the trajectory editor's work grows with the path's length and point count.
@@ -255,7 +256,7 @@ class Segment(BaseModel):
     end: int = Field(gt=0)
     persons: list[int] = Field(min_length=1, max_length=2)
     roles: dict[Literal["0", "1"], str] | None = None
-    repeat: int = Field(default=1, ge=1, le=20)
+    repeat: int = Field(default=1, ge=1, le=MAX_REPEAT)
     travel: Travel | None = None           # direction of travel relative to facing
     timing: RoleTiming | None = None       # two people: who starts, who answers and when
     coverage: Coverage | None = None       # how it was made; set by the generator
