@@ -44,6 +44,12 @@ def cmd_generate(args) -> int:
     write_text(args.out, json.dumps(plain(motion.to_json()), separators=(",", ":")))
     print(f"wrote {args.out}: {len(motion.people)} person(s), {motion.frames} frames "
           f"({motion.seconds:g} s), seed {seed}", file=sys.stderr)
+    for seg in out.plan.segments:       # what the studio could not make, said (never silent)
+        cov = seg.coverage
+        if cov is not None and cov.how == "nearest":
+            shown = f": {cov.shown}" if cov.shown else ""
+            print(f"segment {seg.index} '{seg.prompt}': not in the library — showing the "
+                  f"nearest{shown} (verdict not_covered)", file=sys.stderr)
     return 0
 
 
