@@ -204,3 +204,156 @@ def template_rx(templates) -> re.Pattern:
 
 
 BOTH_SIDES = re.compile(r"\b(?:both|arms|hands)\b")
+
+
+# --- the planner's sentence structure (planner/plan.py) ---
+WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
+CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
+# A leading subject the verb table did not split off ("a person picks up …": no known verb).
+LEADING_SUBJECT = re.compile(r"^(?:(?:a|an|the|one|two|this|that)\s+)?(?:person|man|woman|boy|girl|guy|"
+                             r"lady|kid|child|people|persons|men|women|figure|someone|somebody|he|she|"
+                             r"they|both)\s+", re.I)
+STRIKING_WHILE = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
+                            re.IGNORECASE)
+# A walk or run with an end in its words (to, into, away, across, around, back).
+BOUNDED = re.compile(r"\b(?:to|towards?|up\s+to|into|away|across|in\s+a\s+\w+|around|back)\b")
+COUNT_WORD = re.compile(r"\b(?:once|twice|thrice|times|\d+)\b", re.I)
+# "…, then the right": a clause that only names a side.
+SIDE_ONLY = re.compile(r"^(?:and\s+|then\s+)*(?:with\s+|using\s+)?(?:the\s+)?(left|right)"
+                       r"(?:\s+(?:one|fist|hand|arm|leg|foot|side))?$")
+SPACES = re.compile(r"\s+")
+LOOSE_QUOTES = re.compile(r"(?<![A-Za-z])'|'(?![A-Za-z])|\"")
+
+
+def one_action_rx(countable) -> re.Pattern:
+    """"a tuck jump", "one squat": one of the countable actions (not "jumping jacks" or "jump
+    ropes", which count nothing)."""
+    words = "(?:" + "|".join(sorted(countable)) + ")"
+    return rx(rf"\b(?:a|an|one|single)\s+(?:[a-z-]+\s+){{0,3}}?{words}s?\b(?!\s+(?:jacks?|ropes?))",
+              re.I)
+
+
+# --- the decomposer's sentence structure (planner/decompose.py): limbs, modifiers, possessives ---
+LIMB_PART = re.compile(r"\b(?:(left|right|both|each|either|other)\s+)?(arms?|hands?|fists?|elbows?|"
+                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
+                   r"toes?|heels?|ankles?|thighs?|shins?)\b")
+MODIFIER_MARK = re.compile(r"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:while|with|holding|having|keeping|"
+                   r"as\s+(?:he|she|they|if|though|the\s+person))\b)|"
+                   r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
+AND_SIDE = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|right|both|other)\b)")
+RESTING = re.compile(r"^(?:in\s+(?:a\s+)?rest(?:ing)?\s+position|relaxed|at\s+(?:the|his|her|their)\s+"
+                      r"sides?|down\s+by\s+(?:the|his|her|their)\s+sides?|by\s+the\s+sides?|resting)\b")
+HANDSHAKE_WORDS = re.compile(r"\bshak\w*\s+(?:each\s+other'?s?\s+)?hands?\b")
+BODY_PART = re.compile(r"(?:(?:left|right|both|each|other|own)\s+)?(?:arms?|hands?|fists?|elbows?|"
+                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
+                   r"toes?|heels?|ankles?|thighs?|shins?|head|face|neck|chest|back|waist|hips?|"
+                   r"torso|body|belly|stomach|sides?|chin|ears?|eyes?|mouth|nose|hair|lap|"
+                   r"buttocks?|bottom|knuckles?|upper\s+body|lower\s+body)\b", re.I)
+STATE_MODIFIER = re.compile(r"^(?:(?:while|as)\s+)?(?:with|having|keeping|holding|still\s+holding)\b")
+
+
+# --- temporal structure (planner/temporal.py): sentences, connectives, counts, noun phrases ---
+SENTENCE_END = re.compile(r"(?<=[.!?;])\s+|;\s*|(?<=[a-z])\.\s*$")
+CONNECTIVE = re.compile(
+    r"\s*,?\s*\b(?:and\s+then|and\s+afterwards?|and\s+after\s+that|and\s+finally|and\s+lastly|"
+    r"and\s+next|after\s+that|afterwards?|then|next(?!\s+to)|finally|lastly|subsequently|"
+    r"followed\s+by|and\s+later|later\s+on|later|in\s+the\s+end|"
+    r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
+LEADING_WORD = re.compile(r"^(?:and|also|so|but|first(?:ly)?|at\s+first|to\s+start|to\s+begin\s+with|"
+                   r"initially|then)\b[,\s]*")
+TIMES_SAID = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+times|"
+                    r"(once|twice|thrice))\b")
+LIGHT_CHAIN = re.compile(
+    r"\b(start|starts|started|starting|begin|begins|began|beginning|keep|keeps|kept|keeping|"
+    r"continue|continues|continued|continuing|try|tries|tried|trying|attempt|attempts|attempted|"
+    r"attempting|transition|transitions|transitioned|transitioning|proceed|proceeds|proceeded|"
+    r"proceeding)\s+(?:to\s+|into\s+|on\s+)?(\w+)")
+NOUN_ACT = re.compile(
+    r"\b(?:(do|does|did|doing|perform|performs|performed|performing|make|makes|made|making|throw|"
+    r"throws|threw|throwing|take|takes|took|taking|give|gives|gave|giving|execute|executes|"
+    r"executed|executing)\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
+    r"several|a\s+few)\s+)?((?:(?:full|quick|big|small|deep|little|high|low|single|double|"
+    r"perfect|powerful|fast|slow)\s+)*)([\w-]+)\b")
+FROM_TO = re.compile(
+    r"(?:(?:picks?|picked|picking)\s+up\s+speed\s+|speeds?\s+up\s+|(?:goes|went|transitions?|"
+    r"changes?|switch(?:es)?|moves?)\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?"
+    r"(\w+)\b")
+ALTERNATE = re.compile(r"(?:,?\s*while\s+|,\s*)?alternat\w*\s+between\s+(.+?)\s+and\s+(.+?)"
+                        r"(?:\s+(one|two|three|four|five|six|seven|eight|\d+)\s+times|\s+(twice))?"
+                        r"\s*$")
+CLAUSE_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|before|after|while)\s+)+)"
+                    r"([a-z-]+)")
+
+
+# --- two people's sentence structure (planner/pair/roles.py, actors.py) ---
+WHO_ANSWERS = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
+IN_TURN = re.compile(r"\s*,?\s*\b(?:in\s+turns?|one\s+after\s+the\s+other|each\s+in\s+turn|"
+                      r"alternately)\b")
+TAKE_TURNS = re.compile(r"\b(?:take|takes|taking)\s+turns?\s+(?:at\s+)?(\w+ing)\b")
+IN_RETURN = re.compile(r"\s+(?:back|in\s+return|in\s+response|in\s+reply|too|as\s+well)\b")
+EACH_OTHER = re.compile(r"\b(?:each\s+other|one\s+another|together)\b")
+PLURAL_SUBJECT = re.compile(r"^(?:they|both|two\s+\w+|the\s+(?:two|pair|couple)\b)")
+COPIES_THE_OTHER = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"
+                   r"\s+((?:\w+\s+)?)(?:movements?|moves|motions?|gestures?)(?P<rest>.*)$")
+PAIR_BOTH = re.compile(r"^(?:two\s+(?:people|persons|men|women|boys|girls|friends|dancers|players)|they|"
+                  r"both(?:\s+of\s+them)?|the\s+(?:two|couple|pair|dancers|players|partners|friends)"
+                  r"(?:\s+\w+)?|everyone|each\s+(?:person|of\s+them)|we|a\s+couple)$")
+PAIR_MUTUAL = re.compile(r"\b(?:each\s+other|one\s+another|together|shake\s+hands|shakes\s+hands|hug|"
+                    r"hugs|high[\s-]five|salsa|tango|waltz|partner)\b")
+PAIR_FIRST = re.compile(r"^(?:the\s+)?(?:first(?:\s+(?:person|one))?|person\s+(?:1|one|a)|leader)$")
+PAIR_SECOND = re.compile(r"^(?:the\s+)?(?:second(?:\s+(?:person|one))?|person\s+(?:2|two|b)|follower|"
+                    r"partner)$")
+PAIR_OTHER = re.compile(r"^(?:the\s+)?other(?:\s+(?:one|person))?$")
+PAIR_ONE = re.compile(r"^(?:one|one\s+(?:of\s+them|person)|someone|a\s+person)$")
+
+
+# --- paths said in words (planner/trajectory_text.py) ---
+_PATH_NUMBER = r"(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty|half\s+a|a)"
+PATH_DISTANCE = re.compile(rf"\b{_PATH_NUMBER}\s*-?\s*(m|metres?|meters?|steps?|feet|foot|ft|yards?|paces?)\b"
+                       r"(?:\s+(forward|forwards|ahead|backward|backwards|back|to\s+the\s+left|"
+                       r"to\s+the\s+right|left|right|sideways))?")
+PATH_SIZE = re.compile(rf"\b(?:(?:radius|diameter)\s+(?:of\s+)?)?{_PATH_NUMBER}\s*-?\s*(?:m|metres?|meters?)\b"
+                   r"(?:\s*(?:wide|across|diameter|radius|sides?|sided|big|large)\b)?")
+PATH_CLOCK = re.compile(r"\b(?:turns?|turning|turned|heads?|goes|walks|runs)?\s*(left|right)?\s*"
+                    r"(?:at|to|towards?|toward)\s+(\d{1,2}|one|two|three|four|five|six|seven|eight|"
+                    r"nine|ten|eleven|twelve)\s*o'?\s*clock\b")
+PATH_TRAVEL_HINT = re.compile(r"\b(?:walk|run|jog|sprint|hop|skip|march|crawl|move|go|step|sneak|"
+                          r"stroll|dodge|slide|moonwalk|shuffle|limp)\w*\b")
+
+
+# --- directions of travel (planner/manner/travel.py) ---
+TRAVEL_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
+                   r"(?<!the\s)(?<!their\s)(?<!his\s)(?<!her\s)(?<!its\s)(?<!your\s)\bback\b"
+                   r"(?!\s+(?:up|to|towards?|home|and\s+forth|into|in\b|at\b|on\b|down|where|"
+                   r"from|of\b|onto|inside|over))")
+TRAVEL_SIDEWAYS = re.compile(r"\bsideways\b|\bside[\s-]?steps?\b|\bside[\s-]?stepping\b|\bstrafes?\b|"
+                       r"\bcrab[\s-]?walks?\b|\bsideward")
+TRAVEL_SIDE = re.compile(r"\b(?:to(?:wards)?\s+(?:the|their|his|her|your)\s+|to\s+)?(left|right)(?:wards?)?\b")
+TRAVEL_FORWARD = re.compile(r"\bforwards?\b|\bahead\b")
+
+
+# --- held poses (planner/manner/holds.py) ---
+HOLD_SIDE = re.compile(r"\b(left|right|both|each)\s+(?:\w+\s+)?(?:arms?|hands?|fists?|palms?)|\b(?:arms|hands|fists|palms)\b")
+HOLD_CONTINUE = re.compile(
+    r"^(?:and\s+)?(?:then\s+)?(?:waits?|pauses?|freezes?|remains?(?:\s+(?:still|there|so))?|"
+    r"stays?(?:\s+(?:there|still|put|like\s+(?:that|this)|(?:in|with)\s+(?:that|this|the)\s+"
+    r"(?:pose|position)))?|(?:keeps?|holds?)\s+(?:them|it|the\s+pose|the\s+position|that|this|"
+    r"(?:that|this)\s+(?:pose|position)|still)(?:\s+(?:up|there|raised|still|in\s+place))?)"
+    r"(?:\s+(?:there|a\s+(?:moment|while|bit)|for\s+[\w\s.]+))?$")
+
+
+# --- questions (planner/questions.py) ---
+QUESTION_QUESTION = re.compile(r"^\s*(?:what|what's|whats|how|which|why|when|where|who|can\s+you|could\s+you|"
+                       r"would\s+you|show\s+me|tell\s+me|do\s+you\s+know)\b", re.IGNORECASE)
+QUESTION_STEM = re.compile(r"^\s*(?:what|how)\s+(?:is|are|does|do|would|might|could|will|should)\s+"
+                   r"(?:a|the|an|one)?\s*(?:person|man|woman|someone|people|player|you)?'?s?\s*"
+                   r"(?:motion|reaction|movement|move|gesture)?\s*(?:when|before|after|while|to|"
+                   r"like|do)?\s*", re.IGNORECASE)
+
+
+# --- durations (planner/durations.py) ---
+DURATION_UNDER_ARM = re.compile(r"\bunder (?:[\w']+ ){0,4}arms?\b|\b(?:twirl|spin)s? (?:her|him|them|the (?:follower|"
+                        r"partner|woman|man|girl|boy|lady|other(?: person)?))\b")
+DURATION_STEPS = re.compile(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
+                    r"seven|eight|nine|ten)\s+(?:steps?|strides?|paces?)\b")
+

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from interplay.catalogue import grammar as g
 from interplay.planner.manner.holds import held, keep
 from interplay.planner.verbs import VERBS, Verb, doing_nouns, lookup, third
 
@@ -22,16 +23,7 @@ ARM_WORDS = {"arm", "hand", "fist", "elbow", "wrist", "finger", "palm", "shoulde
              "thumb"}
 LEG_WORDS = {"leg", "foot", "knee", "toe", "heel", "ankle", "thigh", "shin"}
 _PLURAL = {"feet": "foot"}
-_PART = re.compile(r"\b(?:(left|right|both|each|either|other)\s+)?(arms?|hands?|fists?|elbows?|"
-                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
-                   r"toes?|heels?|ankles?|thighs?|shins?)\b")
-_MARK = re.compile(r"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:while|with|holding|having|keeping|"
-                   r"as\s+(?:he|she|they|if|though|the\s+person))\b)|"
-                   r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
 _BOTH_HANDED = {"clap", "cross", "rub", "shrug", "catch", "shake"}   # no per-side rewrite
-_SPLIT_PARTS = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|right|both|other)\b)")
-_RESTING = re.compile(r"^(?:in\s+(?:a\s+)?rest(?:ing)?\s+position|relaxed|at\s+(?:the|his|her|their)\s+"
-                      r"sides?|down\s+by\s+(?:the|his|her|their)\s+sides?|by\s+the\s+sides?|resting)\b")
 POSTURE_BASE = {"standing": "a person stands", "sitting": "a person sits on the floor",
                 "lying": "a person lies on the floor", "squatting": "a person squats",
                 "kneeling": "a person kneels", "crawling": "a person kneels on all fours"}
@@ -68,37 +60,31 @@ def _limbs(side: str | None, noun: str, default_side: str | None = None) -> list
 
 # "shake hands" names both people's hands, not both of one person's: a handshake is one
 # right hand each (the benchmark's handshake check compares right hands)
-_HANDSHAKE = re.compile(r"\bshak\w*\s+(?:each\s+other'?s?\s+)?hands?\b")
 
 
 def parts_in(text: str) -> list[str]:
     """The parts a phrase moves: the limb after "with" ("holding the foot with both hands" →
     arms), else its first limb mention ("hands resting on the knees" → arms); a handshake
     with no side named, the right arm."""
-    if _HANDSHAKE.search(text) and not re.search(r"\b(left|both)\b", text):
+    if g.HANDSHAKE_WORDS.search(text) and not re.search(r"\b(left|both)\b", text):
         return ["right_arm"]
-    m = re.search(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + _PART.pattern[2:], text)
+    m = re.search(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + g.LIMB_PART.pattern[2:], text)
     found = _limbs(m.group(1), m.group(2)) if m else []
     if not found:
-        m = _PART.search(text)
+        m = g.LIMB_PART.search(text)
         found = _limbs(m.group(1), m.group(2)) if m else []
     return found
 
 
 # What a body has: "his left hand" reads "the left hand" (the parts' own words); anything else
 # a person has keeps a possessive in plain English: "catch his breath" → "catch their breath".
-_BODY = re.compile(r"(?:(?:left|right|both|each|other|own)\s+)?(?:arms?|hands?|fists?|elbows?|"
-                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
-                   r"toes?|heels?|ankles?|thighs?|shins?|head|face|neck|chest|back|waist|hips?|"
-                   r"torso|body|belly|stomach|sides?|chin|ears?|eyes?|mouth|nose|hair|lap|"
-                   r"buttocks?|bottom|knuckles?|upper\s+body|lower\s+body)\b", re.I)
 
 
 def plain(text: str) -> str:
     """Possessives → "the" before a body part ("his left hand" → "the left hand"), "their"
     before anything else ("his breath" → "their breath"), spaces tidied."""
     def det(m: re.Match) -> str:
-        return "the " if _BODY.match(text, m.end()) else "their "
+        return "the " if g.BODY_PART.match(text, m.end()) else "their "
     text = re.sub(r"\b(?:his|her|their|its)\s+(?!own\b)", det, text)
     return re.sub(r"\s+", " ", text).strip(" ,")
 
@@ -126,7 +112,7 @@ def split_subject(text: str) -> tuple[str | None, str]:
         if hit and hit[1] != "gerund" and not (i and words[i - 1] in ("the", "a", "an")):
             if i == 0:
                 return None, text
-            if any(x in ("with", "while", "to", "in", "on") or _PART.fullmatch(x) for x in words[:i]):
+            if any(x in ("with", "while", "to", "in", "on") or g.LIMB_PART.fullmatch(x) for x in words[:i]):
                 return None, text
             return " ".join(words[:i]), " ".join(words[i:])
     return None, text
@@ -134,12 +120,11 @@ def split_subject(text: str) -> tuple[str | None, str]:
 
 # A simultaneous phrase that is a state the body keeps ("with both arms raised", "holding the
 # hands on the hips"), not a movement ("while raising the left arm").
-_STATE = re.compile(r"^(?:(?:while|as)\s+)?(?:with|having|keeping|holding|still\s+holding)\b")
 
 
 def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb | None]:
     """(parts, instruction, verb) of one simultaneous phrase ("with the right arm raised")."""
-    state = _STATE.match(mod) is not None
+    state = g.STATE_MODIFIER.match(mod) is not None
     mod = re.sub(r"^(?:(?:while|as\s+(?:he|she|they|if|though|the\s+person)|with|having|keeping|"
                  r"still)\s+)+", "", mod).strip()
     first = mod.split(" ", 1)[0]
@@ -164,7 +149,7 @@ def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb
         return parts, plain(f"holds {obj} {rest}"), v[0]               # "holds the left arm raised"
     if v and v[1] in ("past", "participle", "gerund") and v[0].kind != "light":
         return parts, plain(f"{third(v[0].base)} {obj} {rest[len(word):]}"), v[0]
-    if _RESTING.match(rest):
+    if g.RESTING.match(rest):
         return parts, plain(f"rests {obj} at the side"), None
     return parts, plain(f"holds {obj} {rest}"), None
 
@@ -173,7 +158,7 @@ def _pieces(rest: str, part_verb: bool) -> list[str]:
     """Main phrase and its simultaneous modifiers. "with …" modifies the main phrase only
     right after it, and not when the main verb is a part's ("kicks with the right foot")."""
     out: list[str] = []
-    pieces = [p.strip(" ,") for p in _MARK.split(rest) if p and p.strip(" ,")]
+    pieces = [p.strip(" ,") for p in g.MODIFIER_MARK.split(rest) if p and p.strip(" ,")]
     words = pieces[0].split()
     for i, w in enumerate(words[1:], 1):          # "walks forward waving the right hand"
         hit = lookup(w)
@@ -235,7 +220,7 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
         if re.search(r"\b(?:it|them)\b", main) and last:                # "lowers it"
             noun = "both arms" if len(last) == 2 else "the " + last[0].replace("_", " ")
             main = re.sub(r"\b(?:it|them)\b", noun, main, count=1)
-        chunks = _SPLIT_PARTS.split(main)
+        chunks = g.AND_SIDE.split(main)
         main_parts = [p for c in chunks for p in (parts_in(c) or _ellipsis(c, []))] or \
             _limbs("both" if verb.part in ("arms", "legs") else "right", verb.part.rstrip("s"))
         if len(chunks) > 1:                       # "extends the left arm … and the right upwards"
@@ -248,14 +233,14 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
         last = main_parts
     base_bits = []
     for mod in mods:
-        state = _STATE.match(mod) is not None
-        for sub in _SPLIT_PARTS.split(mod):
-            kept = held(sub) if state or _STATE.match(sub) else {}
+        state = g.STATE_MODIFIER.match(mod) is not None
+        for sub in g.AND_SIDE.split(mod):
+            kept = held(sub) if state or g.STATE_MODIFIER.match(sub) else {}
             if kept:                                   # a named held pose, with its detail
                 edits.update(kept)
                 last = list(kept)
                 continue
-            if state and not _STATE.match(sub):
+            if state and not g.STATE_MODIFIER.match(sub):
                 sub = f"with {sub}"                    # "… and the left arm extended": still held
             parts, words, v = _modifier_edit(sub, last)
             if parts:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from interplay.catalogue import grammar as g
 from interplay.motion.skeleton import FPS
 from interplay.planner.schema import TrajectorySpec
 from interplay.planner.trajectory_text import path_length
@@ -46,13 +47,9 @@ ELASTIC = {"wave", "dance", "wait", "stay", "pose", "balance", "hold", "stand", 
            "sway", "march", "stretch", "shake", "look", "hug", "rest", "flex", "circle"}
 # A partner turned under a raised arm (a couple's spin): captured salsa followers take
 # 1.5–2.5 s for one, more than a spin on one's own
-_UNDER_ARM = re.compile(r"\bunder (?:[\w']+ ){0,4}arms?\b|\b(?:twirl|spin)s? (?:her|him|them|the (?:follower|"
-                        r"partner|woman|man|girl|boy|lady|other(?: person)?))\b")
 PARTNER_SPIN_S = 2.5
 _SPEED_BACK = 0.7     # a backwards or sideways gait covers ground at ~70 % of its forward speed
 STRIDE_S = 0.6        # seconds a walking step takes, and 0.5 s to start and stop
-_STEPS = re.compile(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
-                    r"seven|eight|nine|ten)\s+(?:steps?|strides?|paces?)\b")
 _COUNTS = {"a few": 3, "few": 3, "several": 4, "a couple of": 2, "one": 1, "two": 2, "three": 3,
            "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10}
 
@@ -74,7 +71,7 @@ def estimate(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat
     """Seconds one segment typically takes: the verb's typical duration, a travel's path
     length (or the `metres` a dropped straight path stated) over its speed, times the repeat
     count, slower or faster by its adverbs."""
-    steps = _STEPS.search(text)
+    steps = g.DURATION_STEPS.search(text)
     if verb is None:
         seconds = 2.0
     elif verb.kind == "travel" and steps and trajectory is None and not metres:
@@ -103,13 +100,13 @@ def need(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat: in
          hold: bool = False) -> Need:
     """What one segment needs; `hold`: it keeps a pose (or posture) until it ends."""
     want = estimate(verb, trajectory, repeat, text, metres, sideways)
-    if _UNDER_ARM.search(text):
+    if g.DURATION_UNDER_ARM.search(text):
         want = max(want, PARTNER_SPIN_S + 0.5)
         return Need(want, PARTNER_SPIN_S, hold)
     if verb is None:
         return Need(want, min(want, 1.0), hold)
     bounded = verb.kind == "travel" and bool(trajectory is not None or metres or repeat > 1
-                                             or _STEPS.search(text))
+                                             or g.DURATION_STEPS.search(text))
     if bounded:                  # a set distance or count: covered faster, at most twice as fast
         least = max(LEAST.get(verb.base, 0.0), 0.5 * want)
     else:

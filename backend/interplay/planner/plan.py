@@ -20,8 +20,8 @@ With INTERPLAY_LLM_BASE_URL and INTERPLAY_LLM_MODEL set, `plan()` asks that mode
 from __future__ import annotations
 
 import math
-import re
 
+from interplay.catalogue import grammar as g
 from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
 from interplay.planner.decompose import POSTURE_BASE, Action, decompose, plain, split_subject
@@ -36,19 +36,9 @@ from interplay.planner.trajectory_text import parse as parse_trajectory
 from interplay.planner.verbs import gerund, lookup
 
 MAX_PROMPT = 500
-_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
-_CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
 IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
-# A leading subject the verb table did not split off ("a person picks up …": no known verb).
-_SUBJECT = re.compile(r"^(?:(?:a|an|the|one|two|this|that)\s+)?(?:person|man|woman|boy|girl|guy|"
-                      r"lady|kid|child|people|persons|men|women|figure|someone|somebody|he|she|"
-                      r"they|both)\s+", re.I)
-_ONSET = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
-                    re.IGNORECASE)
 # Postures a step can stay in ("kneels on one knee and stays there"); part verbs hold poses.
 _POSED = {"kneel", "squat", "crouch", "sit", "lie", "stand", "pose", "balance", "lean", "bend"}
-# A walk or run with no end in the words goes on while the other person does something else.
-_BOUNDED = re.compile(r"\b(?:to|towards?|up\s+to|into|away|across|in\s+a\s+\w+|around|back)\b")
 
 
 def _check(prompt, persons, seconds) -> None:
@@ -66,7 +56,7 @@ def _check(prompt, persons, seconds) -> None:
 def _onset_poses(text: str) -> tuple[str, list[str]]:
     """"runs in a zigzag while striking <pose>" → "runs in a zigzag, then runs in a zigzag holding
     <pose>": a pose struck during travel is a second step (the pose is then held)."""
-    m = _ONSET.search(text)
+    m = g.STRIKING_WHILE.search(text)
     entry = lexicon.find(m.group(1)) if m else None
     if m is None or entry is None or entry.hold is None:
         return text, []
@@ -100,16 +90,13 @@ def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temp
 # "a tuck jump", "one squat", "a karate front kick": a count of one that the rewrite to the
 # data's words ("jumps", "kicks high forward …") would drop; "jumping jacks" count nothing.
 # The actions `temporal` keeps a count of one for, and spins (retrieval counts their turns).
-COUNTABLE = "(?:" + "|".join(sorted(temporal.COUNTED_ONCE | {"spin"})) + ")"
-ONE_ACTION = re.compile(rf"\b(?:a|an|one|single)\s+(?:[a-z-]+\s+){{0,3}}?{COUNTABLE}s?\b"
-                        r"(?!\s+(?:jacks?|ropes?))", re.I)
-COUNTED = re.compile(r"\b(?:once|twice|thrice|times|\d+)\b", re.I)
+ONE_ACTION = g.one_action_rx(temporal.COUNTED_ONCE | {"spin"})
 
 
 def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) -> None:
     """Keep a count of one the words asked for (ONE_ACTION) as "once" on the action."""
     said = ONE_ACTION.search(split_subject(clause)[1])      # not the subject's "a person"
-    if repeat != 1 or said is None or COUNTED.search(action.text) or ONE_ACTION.search(action.text):
+    if repeat != 1 or said is None or g.COUNT_WORD.search(action.text) or ONE_ACTION.search(action.text):
         return
     action.text = f"{action.text} once"
     if action.verb is None or action.verb.kind != "part":     # a kick's base is the stand
@@ -118,18 +105,15 @@ def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) 
 
 
 # "punches with the left fist, then the right": the same action with the other side.
-_SIDE_ONLY = re.compile(r"^(?:and\s+|then\s+)*(?:with\s+|using\s+)?(?:the\s+)?(left|right)"
-                        r"(?:\s+(?:one|fist|hand|arm|leg|foot|side))?$")
-_SIDES = re.compile(r"\b(left|right)\b")
 
 
 def _other_side(clause, before: Action, reasons: list[str]) -> None:
     """A clause that only names a side after an action with one: that action, on this side."""
-    m = _SIDE_ONLY.match(clause.text.strip())
-    if m is None or not _SIDES.search(before.text):
+    m = g.SIDE_ONLY.match(clause.text.strip())
+    if m is None or not g.LEFT_RIGHT.search(before.text):
         return
     side = m.group(1)
-    text = _SIDES.sub(side, before.text, count=1)
+    text = g.LEFT_RIGHT.sub(side, before.text, count=1)
     reasons.append(f"ellipsis: '{clause.text}' is '{text}' (the action before, on the {side})")
     clause.text = text
 
@@ -158,7 +142,7 @@ def _going_on(last: dict[int, tuple[str, Action]], person: int) -> str | None:
         return None
     text, action = last[person]
     ongoing = action.verb is not None and action.verb.kind == "travel" and \
-        parse_trajectory(action.text) is None and not _BOUNDED.search(action.text)
+        parse_trajectory(action.text) is None and not g.BOUNDED.search(action.text)
     return text if ongoing else None
 
 
@@ -168,8 +152,8 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
     need), or None to plan without similarity."""
     _check(prompt, persons, seconds)
     reasons: list[str] = []
-    text = re.sub(r"\s+", " ", prompt.replace("’", "'").replace("“", '"').replace("”", '"')).strip()
-    text = re.sub(r"(?<![A-Za-z])'|'(?![A-Za-z])|\"", "", text)
+    text = g.SPACES.sub(" ", prompt.replace("’", "'").replace("“", '"').replace("”", '"')).strip()
+    text = g.LOOSE_QUOTES.sub("", text)
     if questions.is_question(text):
         sim = (lambda q, opts: vocabulary().similar(q, opts)) if vocabulary else None
         try:
@@ -203,7 +187,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             clause.repeat = MAX_REPEAT
         if steps:
             _other_side(clause, steps[-1].action, reasons)
-        if steps and _CLOCK_TURN.match(clause.text) and steps[-1].action.verb is not None \
+        if steps and g.CLOCK_TURN.match(clause.text) and steps[-1].action.verb is not None \
                 and steps[-1].action.verb.kind == "travel":     # "walks 5 m and turns right at 3 o'clock"
             before = steps[-1]
             before.action.text = f"{before.action.text} and {clause.text}"
@@ -217,7 +201,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             prev = new[-1].actors
             last.update({p: (f"a person {s.action.text}", s.action) for s in new for p in s.actors})
             continue
-        other = _OTHER.search(clause.text) if persons == 2 else None
+        other = g.WHILE_THE_OTHER.search(clause.text) if persons == 2 else None
         if other:                                  # "walks while the other waves": both act
             clause.text = clause.text[:other.start()]
         probe = decompose(clause.text, "standing")
@@ -255,7 +239,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
         _travel(steps[-1], reasons)
     if not steps:                                   # nothing recognisable: keep the words
         action = decompose("stands still")
-        action.text = plain(_SUBJECT.sub("", split_subject(temporal.normalize(text))[1]))
+        action.text = plain(g.LEADING_SUBJECT.sub("", split_subject(temporal.normalize(text))[1]))
         action.base = f"a person {action.text}"
         steps = [Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)),
                       coverage=not_understood())]

@@ -15,8 +15,7 @@ from __future__ import annotations
 import re
 from typing import Callable
 
-_QUESTION = re.compile(r"^\s*(?:what|what's|whats|how|which|why|when|where|who|can\s+you|could\s+you|"
-                       r"would\s+you|show\s+me|tell\s+me|do\s+you\s+know)\b", re.IGNORECASE)
+from interplay.catalogue import grammar as g
 
 # (keywords, answer, description). {side}: the side the question names (default right),
 # {other}: the opposite side.
@@ -75,14 +74,10 @@ KNOWLEDGE: tuple[tuple[str, str, str], ...] = (
     (r"swimming\s+pool|dive\s+into|\bpool\b",
      "a person raises both arms above the head, then dives forward", "how a person dives into a pool"),
 )
-_STEM = re.compile(r"^\s*(?:what|how)\s+(?:is|are|does|do|would|might|could|will|should)\s+"
-                   r"(?:a|the|an|one)?\s*(?:person|man|woman|someone|people|player|you)?'?s?\s*"
-                   r"(?:motion|reaction|movement|move|gesture)?\s*(?:when|before|after|while|to|"
-                   r"like|do)?\s*", re.IGNORECASE)
 
 
 def is_question(text: str) -> bool:
-    return text.strip().endswith("?") or bool(_QUESTION.match(text))
+    return text.strip().endswith("?") or bool(g.QUESTION_QUESTION.match(text))
 
 
 def _fill(answer: str, question: str) -> str:
@@ -104,6 +99,6 @@ def answer(question: str, similar: Callable[[str, list[str]], tuple[int, float]]
             out = _fill(KNOWLEDGE[i][1], q)
             return out, (f"question: nearest known question '{KNOWLEDGE[i][2]}' (similarity "
                          f"{score:.2f}) → '{out}'")
-    rest = _STEM.sub("", q).strip()
+    rest = g.QUESTION_STEM.sub("", q).strip()
     out = f"a person {rest}" if rest else q
     return out, f"question: not in the knowledge table; planned from its own words '{out}'"

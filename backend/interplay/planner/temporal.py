@@ -19,6 +19,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from interplay.catalogue import grammar as g
 from interplay.catalogue.grammar import COUNT_SAID
 from interplay.planner.verbs import doing_nouns, gerund, lookup, noun_verb, third
 
@@ -40,38 +41,10 @@ class Clause:
     hold: str = ""                         # words that keep its pose to the end ("waits")
 
 
-_SENT = re.compile(r"(?<=[.!?;])\s+|;\s*|(?<=[a-z])\.\s*$")
-_CONNECT = re.compile(
-    r"\s*,?\s*\b(?:and\s+then|and\s+afterwards?|and\s+after\s+that|and\s+finally|and\s+lastly|"
-    r"and\s+next|after\s+that|afterwards?|then|next(?!\s+to)|finally|lastly|subsequently|"
-    r"followed\s+by|and\s+later|later\s+on|later|in\s+the\s+end|"
-    r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
-_LEAD = re.compile(r"^(?:and|also|so|but|first(?:ly)?|at\s+first|to\s+start|to\s+begin\s+with|"
-                   r"initially|then)\b[,\s]*")
-_COUNT = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+times|"
-                    r"(once|twice|thrice))\b")
-_LIGHT_CHAIN = re.compile(
-    r"\b(start|starts|started|starting|begin|begins|began|beginning|keep|keeps|kept|keeping|"
-    r"continue|continues|continued|continuing|try|tries|tried|trying|attempt|attempts|attempted|"
-    r"attempting|transition|transitions|transitioned|transitioning|proceed|proceeds|proceeded|"
-    r"proceeding)\s+(?:to\s+|into\s+|on\s+)?(\w+)")
-_NOUN_ACT = re.compile(
-    r"\b(?:(do|does|did|doing|perform|performs|performed|performing|make|makes|made|making|throw|"
-    r"throws|threw|throwing|take|takes|took|taking|give|gives|gave|giving|execute|executes|"
-    r"executed|executing)\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
-    r"several|a\s+few)\s+)?((?:(?:full|quick|big|small|deep|little|high|low|single|double|"
-    r"perfect|powerful|fast|slow)\s+)*)([\w-]+)\b")
 # Actions whose count of one the words keep ("does a squat" → "squats once"): the checks and
 # the retrieval count them.
 COUNTED_ONCE = {"jump", "kick", "punch", "squat", "hop", "cartwheel", "flip", "somersault",
                 "lunge", "jab", "leap"}
-_FROM_TO = re.compile(
-    r"(?:(?:picks?|picked|picking)\s+up\s+speed\s+|speeds?\s+up\s+|(?:goes|went|transitions?|"
-    r"changes?|switch(?:es)?|moves?)\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?"
-    r"(\w+)\b")
-_ALTERNATE = re.compile(r"(?:,?\s*while\s+|,\s*)?alternat\w*\s+between\s+(.+?)\s+and\s+(.+?)"
-                        r"(?:\s+(one|two|three|four|five|six|seven|eight|\d+)\s+times|\s+(twice))?"
-                        r"\s*$")
 
 
 def _verb_in(word: str, like: str) -> str | None:
@@ -87,8 +60,6 @@ def _verb_in(word: str, like: str) -> str | None:
 
 # A user's imperative ("walk a few steps and wave") in the third person the rules read: the
 # verbs that open the prompt and each of its clauses, and "you" as the person.
-_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|before|after|while)\s+)+)"
-                    r"([a-z-]+)")
 _YOU = ((r"\byourself\b", "themselves"), (r"\byour\b", "their"),
         (r"\byou\s+(?=can|could|are|were|want|like|have)\b", "they "), (r"\byou\b", "them"))
 
@@ -104,7 +75,7 @@ def _imperative(t: str) -> str:
     def verb(m: re.Match) -> str:
         h = lookup(m.group(2))
         return m.group(1) + (third(h[0].base) if h and h[1] == "base" else m.group(2))
-    return _OPENS.sub(verb, t)
+    return g.CLAUSE_OPENS.sub(verb, t)
 
 
 def normalize(text: str) -> str:
@@ -122,14 +93,14 @@ def normalize(text: str) -> str:
                lambda m: ("standing" if m.group(1) == "getting" else "stands") + " up", t)
     t = re.sub(r"\b(rise|rises|rose|rising)\s+to\s+(?:standing|(?:a\s+)?stand|(?:his|her|their)\s+feet)\b",
                lambda m: ("standing" if m.group(1) == "rising" else "stands") + " up", t)
-    t = _LIGHT_CHAIN.sub(lambda m: _verb_in(m.group(2), m.group(1)) or m.group(0), t)
+    t = g.LIGHT_CHAIN.sub(lambda m: _verb_in(m.group(2), m.group(1)) or m.group(0), t)
     return re.sub(r"\s+", " ", t).strip()
 
 
 def _noun_to_verb(text: str) -> tuple[str, int]:
     """"… does two squats …" / "a full turn" → ("… squats …", 2) / ("turns around", 1): a motion
     noun after a light verb (anywhere), or a clause that is only a motion noun phrase."""
-    for m in _NOUN_ACT.finditer(text):
+    for m in g.NOUN_ACT.finditer(text):
         light, det, adj, noun = m.groups()
         if light is None and (m.start() > 0 or not (det or adj)
                               or any(lookup(w) for w in text[m.end():].split())):
@@ -153,7 +124,7 @@ def _noun_to_verb(text: str) -> tuple[str, int]:
 def _clean(piece: str) -> tuple[str, int]:
     piece = piece.strip(" ,.;:!?")
     while True:
-        new = _LEAD.sub("", piece).strip(" ,")
+        new = g.LEADING_WORD.sub("", piece).strip(" ,")
         if new == piece:
             break
         piece = new
@@ -164,7 +135,7 @@ def _clean(piece: str) -> tuple[str, int]:
     if hit and hit[1] == "gerund" and hit[0].kind != "light":    # "before jumping" → "jumps"
         piece = third(hit[0].base) + piece[len(first):]
     piece, count = _noun_to_verb(piece)
-    m = _COUNT.search(piece)
+    m = g.TIMES_SAID.search(piece)
     if m:
         word = m.group(1) or m.group(2)
         count = int(word) if word.isdigit() else NUMBERS[word]
@@ -237,14 +208,14 @@ def _reorder(sentence: str) -> list[str]:
 
 def _expand(text: str) -> list[tuple[str, tuple[int, int] | None]]:
     """"from a walk to a run, holding X" → two clauses; alternation → n clauses."""
-    m = _FROM_TO.search(text)
+    m = g.FROM_TO.search(text)
     if m:
         a, b = (noun_verb(w) or _base(w) for w in m.groups())
         if a and b:
             head, tail = text[:m.start()].strip(), text[m.end():]
             head = head + " " if head else ""
             return [(f"{head}{third(a)}{tail}", None), (f"{third(b)}{tail}", None)]
-    m = _ALTERNATE.search(text)
+    m = g.ALTERNATE.search(text)
     if m:
         main = text[:m.start()].strip(" ,")
         acts = [_act(m.group(1)), _act(m.group(2))]
@@ -278,9 +249,9 @@ def _act(phrase: str) -> str:
 def split(text: str) -> list[Clause]:
     """Ordered clauses of a normalised prompt."""
     pieces: list[str] = []
-    for sentence in _SENT.split(text):
+    for sentence in g.SENTENCE_END.split(text):
         for part in _reorder(sentence.strip(" .!?;")):
-            pieces.extend(p for p in _CONNECT.split(part) if p and p.strip(" ,"))
+            pieces.extend(p for p in g.CONNECTIVE.split(part) if p and p.strip(" ,"))
     clauses: list[Clause] = []
     for piece in pieces:
         fragments: list[str] = []

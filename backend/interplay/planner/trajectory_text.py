@@ -18,6 +18,7 @@ import math
 import re
 from typing import Literal, cast
 
+from interplay.catalogue import grammar as g
 from interplay.planner.schema import (
     MAX_COORD,
     MAX_PATH_M,
@@ -33,15 +34,6 @@ _NUM = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven":
 _UNIT = {"m": 1.0, "metre": 1.0, "meter": 1.0, "metres": 1.0, "meters": 1.0, "step": 0.7,
          "steps": 0.7, "foot": 0.3048, "feet": 0.3048, "ft": 0.3048, "yard": 0.9144,
          "yards": 0.9144, "pace": 0.7, "paces": 0.7}
-_NUMBER = r"(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty|half\s+a|a)"
-_DISTANCE = re.compile(rf"\b{_NUMBER}\s*-?\s*(m|metres?|meters?|steps?|feet|foot|ft|yards?|paces?)\b"
-                       r"(?:\s+(forward|forwards|ahead|backward|backwards|back|to\s+the\s+left|"
-                       r"to\s+the\s+right|left|right|sideways))?")
-_SIZE = re.compile(rf"\b(?:(?:radius|diameter)\s+(?:of\s+)?)?{_NUMBER}\s*-?\s*(?:m|metres?|meters?)\b"
-                   r"(?:\s*(?:wide|across|diameter|radius|sides?|sided|big|large)\b)?")
-_CLOCK = re.compile(r"\b(?:turns?|turning|turned|heads?|goes|walks|runs)?\s*(left|right)?\s*"
-                    r"(?:at|to|towards?|toward)\s+(\d{1,2}|one|two|three|four|five|six|seven|eight|"
-                    r"nine|ten|eleven|twelve)\s*o'?\s*clock\b")
 _CLOCK_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
                 "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
 _SHAPES = [  # (pattern, shape); first match wins
@@ -60,8 +52,6 @@ _SHAPES = [  # (pattern, shape); first match wins
 _SIDE = r"\b(?:(?:sideways\s+)?(?:to|towards)\s+(?:the|his|her|their)\s+{0}|{0}wards?)\b"
 _DIRECTION = [(r"\bback(?:ward)?s?\b(?!\s+up)|\bin\s+reverse\b", "backward"),
               (_SIDE.format("left"), "left"), (_SIDE.format("right"), "right")]
-_TRAVEL_HINT = re.compile(r"\b(?:walk|run|jog|sprint|hop|skip|march|crawl|move|go|step|sneak|"
-                          r"stroll|dodge|slide|moonwalk|shuffle|limp)\w*\b")
 DEFAULT_LINE = 4.0    # metres of a sideways/backwards walk with no distance given
 _HEADING = {"forward": (0.0, 1.0), "backward": (0.0, -1.0), "left": (1.0, 0.0), "right": (-1.0, 0.0)}
 
@@ -81,22 +71,22 @@ def _direction(text: str) -> str | None:
 def parse(text: str) -> TrajectorySpec | None:
     """The trajectory a clause asks for, or None for free or in-place motion."""
     t = text.lower()
-    clock = _CLOCK.search(t)
+    clock = g.PATH_CLOCK.search(t)
     if clock:
         word = clock.group(2)
         hour = int(word) if word.isdigit() else _CLOCK_WORDS[word]
         if 1 <= hour <= 12:
             said = cast(Literal["left", "right"] | None, clock.group(1))   # the pattern's (left|right)?
             side = said or ("right" if hour < 6 else "left" if hour > 6 else None)
-            dist = _DISTANCE.search(t)
+            dist = g.PATH_DISTANCE.search(t)
             distance_m = round(_number(dist.group(1)) * _UNIT[dist.group(2)], 3) if dist else None
             return _bounded({"shape": "line", "turn_at": TurnAt(clock=hour, side=side),
                              "direction": "forward", "text": text.strip(),
                              "distance_m": distance_m})
-    travel = _TRAVEL_HINT.search(t) is not None or re.search(r"\b(?:path|trajectory|route)\b", t)
+    travel = g.PATH_TRAVEL_HINT.search(t) is not None or re.search(r"\b(?:path|trajectory|route)\b", t)
     # Shapes only count for travel: "swings the arm in circles" is not a path.
     shape = next((s for rx, s in _SHAPES if re.search(rx, t)), None) if travel else None
-    dist = _DISTANCE.search(re.sub(r"\bon\s+(?:one|the\s+\w+|a)\s+foot\b", "", t)) if travel else None
+    dist = g.PATH_DISTANCE.search(re.sub(r"\bon\s+(?:one|the\s+\w+|a)\s+foot\b", "", t)) if travel else None
     distance = _number(dist.group(1)) * _UNIT[dist.group(2)] if dist else None
     direction = _direction(dist.group(3) or "") if dist and dist.group(3) else None
     if shape is None and direction is None and travel:
@@ -115,7 +105,7 @@ def parse(text: str) -> TrajectorySpec | None:
             spec["clockwise"] = True
         elif re.search(r"\bto\s+the\s+left\b|\bturning\s+left\b", t):
             spec["clockwise"] = False
-        size = _SIZE.search(t)
+        size = g.PATH_SIZE.search(t)
         if size and (not dist or re.search(r"wide|across|diameter|radius|side|big|large", size.group(0))
                      or re.match(r"\s*(?:circle|square|heart|spiral|figure|arc|semi)", t[size.end():])):
             spec["size_m"] = _number(size.group(1)) * (2.0 if "radius" in size.group(0) else 1.0)

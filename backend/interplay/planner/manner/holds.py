@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import re
 
+from interplay.catalogue import grammar as g
+
 ARMS = ("left_arm", "right_arm")
 _ARM = r"(?:arms?|hands?|fists?|palms?)"
 _DET = r"(?:(?:the|their|his|her|your|both|each|a|an|its)\s+)*"
@@ -50,22 +52,15 @@ POSES: tuple[tuple[str, str, bool], ...] = (
      rf"lifted|lifting)\s+{_DET}(?:\w+\s+)?{_ARM}\b",
      "holds the {side} arm raised above the head", False),
 )
-_SIDE = re.compile(rf"\b(left|right|both|each)\s+(?:\w+\s+)?{_ARM}|\b(?:arms|hands|fists|palms)\b")
 
 # What a step followed by these words does: keeps its pose ("… and waits", "… and keeps them
 # up", "… and stays there", "holds it"). Said on its own it is a wait, not a hold.
-_CONTINUE = re.compile(
-    r"^(?:and\s+)?(?:then\s+)?(?:waits?|pauses?|freezes?|remains?(?:\s+(?:still|there|so))?|"
-    r"stays?(?:\s+(?:there|still|put|like\s+(?:that|this)|(?:in|with)\s+(?:that|this|the)\s+"
-    r"(?:pose|position)))?|(?:keeps?|holds?)\s+(?:them|it|the\s+pose|the\s+position|that|this|"
-    r"(?:that|this)\s+(?:pose|position)|still)(?:\s+(?:up|there|raised|still|in\s+place))?)"
-    r"(?:\s+(?:there|a\s+(?:moment|while|bit)|for\s+[\w\s.]+))?$")
 
 
 def _sides(text: str) -> tuple[str, ...]:
     """Which arms a pose phrase names: both for "both"/plurals, else the side it says, else
     the right ("hand on hip")."""
-    m = _SIDE.search(text)
+    m = g.HOLD_SIDE.search(text)
     if m is None:
         return ("right_arm",)
     side = m.group(1)
@@ -88,7 +83,7 @@ def held(phrase: str) -> dict[str, str]:
 
 def continues_hold(clause: str) -> bool:
     """Does a clause only keep what the step before it did ("waits", "keeps them up")?"""
-    return bool(_CONTINUE.match(clause.strip(" ,.").lower()))
+    return bool(g.HOLD_CONTINUE.match(clause.strip(" ,.").lower()))
 
 
 def as_held(edit: str) -> str:

@@ -15,8 +15,7 @@ forward and moves backwards; `untangle` drops a straight path that only restates
 
 from __future__ import annotations
 
-import re
-
+from interplay.catalogue import grammar as g
 from interplay.planner.schema import TrajectorySpec, Travel
 from interplay.planner.verbs import Verb
 
@@ -25,14 +24,6 @@ MOVING = {"jump", "leap", "stumble", "step", "lunge", "slide", "dodge", "roll", 
           "trip", "stagger"}
 # Verbs whose "to the left" is a step sideways, not a turn and a walk that way.
 LATERAL = {"step", "shuffle", "hop", "jump", "leap", "slide", "dodge", "lunge", "skip"}
-_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
-                   r"(?<!the\s)(?<!their\s)(?<!his\s)(?<!her\s)(?<!its\s)(?<!your\s)\bback\b"
-                   r"(?!\s+(?:up|to|towards?|home|and\s+forth|into|in\b|at\b|on\b|down|where|"
-                   r"from|of\b|onto|inside|over))")
-_SIDEWAYS = re.compile(r"\bsideways\b|\bside[\s-]?steps?\b|\bside[\s-]?stepping\b|\bstrafes?\b|"
-                       r"\bcrab[\s-]?walks?\b|\bsideward")
-_SIDE = re.compile(r"\b(?:to(?:wards)?\s+(?:the|their|his|her|your)\s+|to\s+)?(left|right)(?:wards?)?\b")
-_FORWARD = re.compile(r"\bforwards?\b|\bahead\b")
 
 
 def direction(text: str, verb: Verb | None) -> Travel | None:
@@ -41,14 +32,14 @@ def direction(text: str, verb: Verb | None) -> Travel | None:
     if verb is None or not (verb.kind == "travel" or verb.base in MOVING):
         return None
     t = text.lower()
-    if _BACK.search(t):
+    if g.TRAVEL_BACK.search(t):
         return "backward"
-    side = _SIDE.search(t)
-    if side and (_SIDEWAYS.search(t) or verb.base in LATERAL):
+    side = g.TRAVEL_SIDE.search(t)
+    if side and (g.TRAVEL_SIDEWAYS.search(t) or verb.base in LATERAL):
         return "left" if side.group(1) == "left" else "right"
-    if _SIDEWAYS.search(t):
+    if g.TRAVEL_SIDEWAYS.search(t):
         return "left"            # "steps sideways", side unsaid: one side, said in `reasons`
-    if _FORWARD.search(t):
+    if g.TRAVEL_FORWARD.search(t):
         return "forward"
     return None
 

@@ -14,16 +14,14 @@ from __future__ import annotations
 
 import re
 
-BOTH = re.compile(r"^(?:two\s+(?:people|persons|men|women|boys|girls|friends|dancers|players)|they|"
-                  r"both(?:\s+of\s+them)?|the\s+(?:two|couple|pair|dancers|players|partners|friends)"
-                  r"(?:\s+\w+)?|everyone|each\s+(?:person|of\s+them)|we|a\s+couple)$")
-MUTUAL = re.compile(r"\b(?:each\s+other|one\s+another|together|shake\s+hands|shakes\s+hands|hug|"
-                    r"hugs|high[\s-]five|salsa|tango|waltz|partner)\b")
-FIRST = re.compile(r"^(?:the\s+)?(?:first(?:\s+(?:person|one))?|person\s+(?:1|one|a)|leader)$")
-SECOND = re.compile(r"^(?:the\s+)?(?:second(?:\s+(?:person|one))?|person\s+(?:2|two|b)|follower|"
-                    r"partner)$")
-OTHER = re.compile(r"^(?:the\s+)?other(?:\s+(?:one|person))?$")
-ONE = re.compile(r"^(?:one|one\s+(?:of\s+them|person)|someone|a\s+person)$")
+from interplay.catalogue import grammar as g
+
+BOTH = g.PAIR_BOTH
+MUTUAL = g.PAIR_MUTUAL
+FIRST = g.PAIR_FIRST
+SECOND = g.PAIR_SECOND
+OTHER = g.PAIR_OTHER
+ONE = g.PAIR_ONE
 
 
 def actors(subject: str | None, persons: int, prev: list[int] | None, names: dict,

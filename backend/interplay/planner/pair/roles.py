@@ -25,6 +25,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
+from interplay.catalogue import grammar as g
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose
 from interplay.planner.manner.travel import direction
 from interplay.planner.pair.actors import FIRST, ONE, SECOND, person
@@ -36,22 +37,15 @@ _NOUNS = "|".join(sorted(SUBJECT_NOUNS | {"partner", "friend", "follower", "lead
 # The partner as an object: "the other", "him", "the woman", "her partner".
 PARTNER = (rf"(?:the\s+other(?:\s+(?:one|person))?|him|her(?!\s+(?:{_NOUNS})\b)|them|"
            rf"(?:a|an|the|his|her|their)\s+(?:{_NOUNS}))")
-_SUBJECT = re.compile(rf"^(?P<subj>one(?:\s+(?:of\s+them|person))?|someone|a\s+person|he|she|"
+_SUBJECT = g.rx(rf"^(?P<subj>one(?:\s+(?:of\s+them|person))?|someone|a\s+person|he|she|"
                       rf"the\s+(?:first|second|leader|follower)(?:\s+(?:one|person))?|"
                       rf"(?:a|an|the)\s+(?:{_NOUNS}))\s+(?P<rest>.+)$")
 _OTHER_SUBJECT = r"the\s+other(?:\s+(?:one|person))?|the\s+second(?:\s+(?:one|person))?|the\s+follower"
-_COORD = re.compile(rf"^(?P<head>.+?)(?:\s*,\s*|\s+)(?:and\s+|while\s+|as\s+|whereas\s+|but\s+)?"
+_COORD = g.rx(rf"^(?P<head>.+?)(?:\s*,\s*|\s+)(?:and\s+|while\s+|as\s+|whereas\s+|but\s+)?"
                     rf"(?P<word>and\s+|while\s+|as\s+|whereas\s+|but\s+|)?(?:{_OTHER_SUBJECT})\s+"
                     rf"(?P<answer>\w+.*)$")
-_WHO = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
-_IN_TURN = re.compile(r"\s*,?\s*\b(?:in\s+turns?|one\s+after\s+the\s+other|each\s+in\s+turn|"
-                      r"alternately)\b")
-_TAKE_TURNS = re.compile(r"\b(?:take|takes|taking)\s+turns?\s+(?:at\s+)?(\w+ing)\b")
-_ANSWER = re.compile(r"\s+(?:back|in\s+return|in\s+response|in\s+reply|too|as\s+well)\b")
 _CONTACT = {"push", "shove", "pull", "punch", "hit", "slap", "kick", "tackle", "bump", "poke",
             "touch", "grab", "tap", "nudge"}
-_TOGETHER = re.compile(r"\b(?:each\s+other|one\s+another|together)\b")
-_PLURAL = re.compile(r"^(?:they|both|two\s+\w+|the\s+(?:two|pair|couple)\b)")
 
 # Verbs done to the partner whose answer is known: (lead's words, partner's words, response).
 # "{rest}" is what followed the partner ("around the room"); lead 1 means the partner leads.
@@ -71,8 +65,6 @@ CAUSED: dict[str, tuple[str, str, Response, int]] = {
     "lead": ("walks forward{rest}, leading the other person by the hand",
              "walks along{rest}, following the other person", "with", 0),
 }
-_COPY = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"
-                   r"\s+((?:\w+\s+)?)(?:movements?|moves|motions?|gestures?)(?P<rest>.*)$")
 
 
 @dataclass
@@ -97,7 +89,7 @@ def _partner_words(text: str) -> str:
 
 def _answer(text: str) -> tuple[str, bool]:
     """(the answer's words, whether it is said to answer: "waves back" → ("waves", True))."""
-    t = _ANSWER.sub("", text)
+    t = g.IN_RETURN.sub("", text)
     return t.strip(" ,"), t != text
 
 
@@ -117,25 +109,25 @@ def _who(subject: str, names: dict) -> int:
 
 def exchange(text: str, names: dict) -> Exchange | None:
     """The exchange a clause describes (see the module docstring), or None."""
-    t = _TAKE_TURNS.sub(lambda m: f"{m.group(1)} in turn", text)
-    if _IN_TURN.search(t) and _PLURAL.match(t):
+    t = g.TAKE_TURNS.sub(lambda m: f"{m.group(1)} in turn", text)
+    if g.IN_TURN.search(t) and g.PLURAL_SUBJECT.match(t):
         rest = re.sub(r"^(?:they|both(?:\s+of\s+them)?|two\s+\w+|the\s+(?:two|pair|couple)"
-                      r"(?:\s+\w+)?)\s+", "", _IN_TURN.sub("", t))
+                      r"(?:\s+\w+)?)\s+", "", g.IN_TURN.sub("", t))
         hit = lookup(rest.split(" ", 1)[0])
         if hit is None:
             return None
         rest = third(hit[0].base) + rest[len(rest.split(" ", 1)[0]):]      # "bow" → "bows"
         return Exchange(0, {0: rest, 1: rest}, "after", f"roles: '{text}' → one after the other")
     m = _SUBJECT.match(t)
-    if m is None or _TOGETHER.search(t) or not (lookup(m.group("rest").split(" ", 1)[0])
-                                                or _COPY.match(m.group("rest"))):
+    if m is None or g.EACH_OTHER.search(t) or not (lookup(m.group("rest").split(" ", 1)[0])
+                                                or g.COPIES_THE_OTHER.match(m.group("rest"))):
         return None                  # both do it ("… wave at each other"), or no verb follows
     subject, rest = m.group("subj"), m.group("rest")
     first = _who(subject, names)
     named = re.search(rf"\b(?:a|an|the|his|her|their)\s+({_NOUNS})\b", rest)
     if named and named.group(1) not in names:                # "… pushes a woman": the other one
         names[named.group(1)] = 1 - first
-    who = _WHO.match(rest)
+    who = g.WHO_ANSWERS.match(rest)
     if who and re.search(rf"\b{PARTNER}\b", who.group("head")):
         head, (answer, _) = who.group("head"), _answer(who.group("answer"))
         verb = _verb(head)
@@ -152,7 +144,7 @@ def exchange(text: str, names: dict) -> Exchange | None:
         return Exchange(first, {first: _partner_words(head), 1 - first: answer}, response,
                         f"roles: '{text}' → {first} {head}; {1 - first} {answer} "
                         f"({'at the same time' if response == 'with' else 'after it'})")
-    copy = _COPY.match(rest)
+    copy = g.COPIES_THE_OTHER.match(rest)
     if copy:
         what = (copy.group(1) or "arm").strip().rstrip("s")
         lead_text = f"raises and lowers both {'legs' if what == 'leg' else 'arms'} slowly"
