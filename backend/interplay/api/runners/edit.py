@@ -11,6 +11,7 @@ segments the edit changed reviewed again (`version_review`)."""
 from __future__ import annotations
 
 import logging
+from typing import cast
 
 from interplay.api.events import DoneEvent, ErrorEvent
 from interplay.api.runners.version_review import Reviewing
@@ -19,6 +20,7 @@ from interplay.pipeline.editing import edit_stored
 from interplay.pipeline.orchestrator import default_evaluator
 from interplay.pipeline.rerun import rerun_stored
 from interplay.pipeline.segment_source import Cancelled
+from interplay.store.repository import MotionRepository
 
 log = logging.getLogger(__name__)
 
@@ -30,7 +32,7 @@ def edit_job(job, generator, repo) -> None:
         return
     try:
         what = {"kind": "edit", "part": spec.part, "prompt": spec.prompt, "frames": spec.frames}
-        edited = edit_stored(Reviewing(repo, parent, what, default_evaluator()), generator,
+        edited = edit_stored(_reviewing(repo, parent, what, default_evaluator()), generator,
                              parent, spec.part, spec.prompt, spec.frames,
                              spec.seed, spec.trajectory, id=job.motion_id,
                              client_id=spec.client_id)
@@ -52,7 +54,7 @@ def rerun_job(job, generator, repo) -> None:
         return
     try:
         what = {"kind": "rerun", "segment": int(spec.segment or 0), "seed": spec.seed}
-        made = rerun_stored(Reviewing(repo, parent, what, default_evaluator()), generator, parent,
+        made = rerun_stored(_reviewing(repo, parent, what, default_evaluator()), generator, parent,
                             int(spec.segment or 0), int(spec.seed or 0),
                             client_id=spec.client_id, id=job.motion_id)
     except ValueError as exc:
@@ -61,6 +63,12 @@ def rerun_job(job, generator, repo) -> None:
         log.exception("re-run of segment %s of motion %s failed", spec.segment, spec.parent_id)
         return _fail(job, 503, f"the re-run failed: {type(exc).__name__}: {exc}")
     job.push(DoneEvent(motion_id=made.id, frames=made.frames).dump())
+
+
+def _reviewing(repo, parent, what: dict, evaluator) -> MotionRepository:
+    """The repository whose `create` also stores the new version's own review (`Reviewing`
+    stands in for it by delegation, so the pipeline's functions take it as the repository)."""
+    return cast(MotionRepository, Reviewing(repo, parent, what, evaluator))
 
 
 def _parent(job, repo):
