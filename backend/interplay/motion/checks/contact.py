@@ -17,6 +17,7 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.bodyframe import BodyFrame
 from interplay.motion.checks import measures as m
+from interplay.motion.checks.everyday import meetings
 from interplay.motion.pair.body import SPHERE_JOINT, body_spheres
 from interplay.motion.signals import fill_gaps, runs
 
@@ -43,19 +44,6 @@ TARGETS: dict[str, tuple[str, ...]] = {
     "back": ("spine1", "spine2", "spine3"),           # … from behind (see hand_on)
     "leg": ("left_knee", "right_knee", "left_hip", "right_hip"),
 }
-
-
-def meetings(gap: np.ndarray, near: float, apart: float) -> list[int]:
-    """Frames at which a gap (T,) closes under `near` after having been over `apart` (or at
-    the start): separate touches, not one long hold counted twice by its jitter."""
-    out, ready = [], True
-    for i, g in enumerate(gap):
-        if ready and g <= near:
-            out.append(i)
-            ready = False
-        elif g >= apart:
-            ready = True
-    return out
 
 
 def hand_on(a: np.ndarray, b: np.ndarray, fb: BodyFrame, target: str) -> np.ndarray:

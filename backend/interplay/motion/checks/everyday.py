@@ -47,7 +47,8 @@ GAIT_UNEVEN = 0.30         # … and the mean time the body spends on each foot 
                            # step passes as a limp)
 
 
-def _count_ok(n: int, count: int | None, at_least: int | None) -> tuple[bool, str]:
+def count_ok(n: int, count: int | None, at_least: int | None) -> tuple[bool, str]:
+    """A count held to exactly `count`, else to at least `at_least` (1 when neither is given)."""
     if count is not None:
         return n == count, f"= {count}"
     lo = 1 if at_least is None else at_least
@@ -161,7 +162,7 @@ def hands_meet(b: BodyFrame, count: int | None = None, at_least: int | None = No
                max_m: float = HANDS_MEET_M):
     """The two hands come together (surfaces within 10 cm) — a clap, a toast, a ball in both hands — counted per meeting."""
     n = len(meetings(own_hands_gap(b), max_m))
-    ok, bound = _count_ok(n, count, at_least)
+    ok, bound = count_ok(n, count, at_least)
     return ok, n, f"hands within {max_m} m, {bound} times"
 
 
@@ -189,7 +190,7 @@ def lies_on(b: BodyFrame, side: str = "front", min_s: float = 1.0):
 def sit_ups(b: BodyFrame, count: int | None = None, at_least: int | None = None):
     """Sit-ups: from lying on the back the torso curls up to within 35° of vertical and lies back, the pelvis staying low."""
     n = len(curls(b))
-    ok, bound = _count_ok(n, count, at_least)
+    ok, bound = count_ok(n, count, at_least)
     return ok, n, bound
 
 

@@ -112,13 +112,6 @@ def pair(fn: Pair) -> Pair:
     return fn
 
 
-def _count_ok(n: int, count: int | None, at_least: int | None) -> tuple[bool, str]:
-    if count is not None:
-        return n == count, f"= {count}"
-    lo = 1 if at_least is None else at_least
-    return n >= lo, f">= {lo}"
-
-
 def _longest(mask: np.ndarray) -> float:
     """Seconds of the longest run of True (single-frame gaps filled)."""
     r = runs(fill_gaps(mask))
@@ -145,7 +138,7 @@ for _fn in heads.AGAINST_BASE:
 def jump_count(b: BodyFrame, count: int | None = None, at_least: int | None = None):
     """Jumps and hops: flights (both feet off the floor 0.1–1 s) that lift the pelvis over standing height."""
     n = len(m.jumps(b))
-    ok, bound = _count_ok(n, count, at_least)
+    ok, bound = everyday.count_ok(n, count, at_least)
     return ok, n, bound
 
 
@@ -153,7 +146,7 @@ def jump_count(b: BodyFrame, count: int | None = None, at_least: int | None = No
 def squat_count(b: BodyFrame, count: int | None = None, at_least: int | None = None):
     """Squats: pelvis dips under 75 % of standing height and back over 88 %, feet down, not a jump's crouch."""
     n = len(m.squats(b))
-    ok, bound = _count_ok(n, count, at_least)
+    ok, bound = everyday.count_ok(n, count, at_least)
     return ok, n, bound
 
 
@@ -166,7 +159,7 @@ def kick(b: BodyFrame, leg: str = "any", count: int | None = None, at_least: int
         n, wrong = len(found["left"]) + len(found["right"]), 0
     else:
         n, wrong = len(found[leg]), len(found["right" if leg == "left" else "left"])
-    ok, bound = _count_ok(n, count, at_least)
+    ok, bound = everyday.count_ok(n, count, at_least)
     value = {s: [round(h, 2) for _, h in k] for s, k in found.items()}
     return ok and wrong == 0, value, f"{leg} kicks {bound} of ≥ {height:.2f} m" + (
         ", none with the other leg" if leg != "any" else "")
@@ -177,7 +170,7 @@ def punch(b: BodyFrame, hand: str = "any", count: int | None = None, at_least: i
     """Punches with the named hand: the hand driven forward fast onto a straight arm at chest-to-head height."""
     found = {s: m.punches(b, s) for s in m.SIDES}
     n = len(found["left"]) + len(found["right"]) if hand == "any" else len(found[hand])
-    ok, bound = _count_ok(n, count, at_least)
+    ok, bound = everyday.count_ok(n, count, at_least)
     return ok, {s: len(v) for s, v in found.items()}, f"{hand} punches {bound}"
 
 
