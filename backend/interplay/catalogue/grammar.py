@@ -357,3 +357,29 @@ DURATION_UNDER_ARM = re.compile(r"\bunder (?:[\w']+ ){0,4}arms?\b|\b(?:twirl|spi
 DURATION_STEPS = re.compile(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
                     r"seven|eight|nine|ten)\s+(?:steps?|strides?|paces?)\b")
 
+
+
+# --- the reviewer's contact words (review/checks.py) ---
+REVIEW_CONTACT_VERBS = re.compile(r"\b(shak\w* hands?|handshake|high[- ]?fives?|hug\w*|embrac\w*|"
+                           r"push\w*|shov\w*|hold\w* hands?|clap\w* hands with|pull\w*|"
+                           r"slap\w*|touch\w*|carr(y|ies))\b", re.I)
+REVIEW_HUG_WORDS = re.compile(r"\b(hug\w*|embrac\w*|cuddl\w*)\b", re.I)
+REVIEW_COUPLE_DANCE = re.compile(r"\b(salsa|tango|waltz\w*|ballroom|couples?|partners?|leader|follower)\b|"
+                          r"\bdanc\w*\s+(together|with)\b", re.I)
+
+
+# --- two people's gestures (generators/interaction/gestures.py) ---
+GESTURE_WHO = re.compile(r"\b(?:two|the two|both|a pair of|a couple of)\s+(?:of\s+them\s+)?"
+                  r"(?:people|persons|friends|men|women|kids|children|dancers|athletes)?\b|"
+                  r"\bboth\s+of\s+them\b|\bthey\b|\bboth\b", re.I)
+GESTURE_TOGETHER = re.compile(r"\s*\b(?:together|at the same time|in unison|in sync\w*|"
+                       r"simultaneously|side by side|next to each other)\b", re.I)
+
+
+# --- composition (generators/interaction/generator.py) ---
+COMPOSE_IDLE = re.compile(r"(a person )?(stands?|waits?|remains?|stays?)( still| there| in place)?\.?", re.I)
+
+
+# --- a couple's spin (generators/retrieval/couple.py) ---
+COUPLE_SPIN = re.compile(r"\btwirl\w*|\b(?:spin|turn)\w* (?:her|him|them|the (?:follower|partner|woman|man|"
+                  r"girl|boy|lady|other(?: person)?))\b|\bunder (?:[\w']+ ){0,4}arms?\b")

@@ -10,15 +10,17 @@ in-between edit can repaint (CoMA: "the reviewer selects the keyframes to repain
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import numpy as np
 
+from interplay.catalogue import grammar as g
 from interplay.motion import metrics as mt
 from interplay.motion import skeleton as sk
 from interplay.motion.pair.resolve import pair_bounds
 from interplay.motion.signals import runs
+
+CONTACT_VERBS = g.REVIEW_CONTACT_VERBS     # what the reviewer reads as a touch between two people
 
 # Thresholds (a check fails above them). Retrieval/fitted motions keep bones to < 1 mm, so 1 cm
 # of mean deviation is a broken skeleton; 10 % of frames skating is several visible slides;
@@ -37,16 +39,10 @@ SKATE_FRAME_SPEED = 1.0      # m/s: a planted foot this fast in one frame is a v
 PENETRATION_FRAME_M = 0.04
 
 # Verbs whose meaning needs the two people's hands (or bodies) to touch.
-CONTACT_VERBS = re.compile(r"\b(shak\w* hands?|handshake|high[- ]?fives?|hug\w*|embrac\w*|"
-                           r"push\w*|shov\w*|hold\w* hands?|clap\w* hands with|pull\w*|"
-                           r"slap\w*|touch\w*|carr(y|ies))\b", re.I)
 # The contact a two-person text asks for, as the penetration bound and its resolution take it
 # (`motion.pair.resolve`): a hug puts the arms round the partner; the other contact verbs, and
 # dancing as a couple (the benchmark's prompts mark it as contact: captured salsa holds hands
 # and turns close), let hands and forearms touch; anything else touches nowhere.
-HUG_WORDS = re.compile(r"\b(hug\w*|embrac\w*|cuddl\w*)\b", re.I)
-COUPLE_DANCE = re.compile(r"\b(salsa|tango|waltz\w*|ballroom|couples?|partners?|leader|follower)\b|"
-                          r"\bdanc\w*\s+(together|with)\b", re.I)
 # Metrics the correction loop must not make worse (lower is better for each).
 WATCHED = ("bone_deviation", "com_lean", "skating_ratio", "foot_skating", "ground_penetration",
            "floating", "intersection_frequency", "intersection_volume")
@@ -98,15 +94,15 @@ def com_lean(joints: np.ndarray) -> float:
 
 
 def wants_contact(text: str) -> bool:
-    return bool(CONTACT_VERBS.search(text or ""))
+    return bool(g.REVIEW_CONTACT_VERBS.search(text or ""))
 
 
 def contact_mode(text: str) -> str:
     """"hug", "hands" or "none": the contact `text` asks for (`motion.pair.resolve.CONTACTS`)."""
     text = text or ""
-    if HUG_WORDS.search(text):
+    if g.REVIEW_HUG_WORDS.search(text):
         return "hug"
-    return "hands" if CONTACT_VERBS.search(text) or COUPLE_DANCE.search(text) else "none"
+    return "hands" if g.REVIEW_CONTACT_VERBS.search(text) or g.REVIEW_COUPLE_DANCE.search(text) else "none"
 
 
 def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> Checks:
@@ -145,7 +141,7 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
             windows += _windows(mt.pair_geometry(people[0], people[1])["overlap"],
                                 "body intersection", t)
     if len(people) == 2 and wants_contact(text) and m["contact_frames"] == 0:
-        verb = CONTACT_VERBS.search(text)       # wants_contact(text) matched it
+        verb = g.REVIEW_CONTACT_VERBS.search(text)       # wants_contact(text) matched it
         failed["missing_contact"] = (f"'{verb.group(0) if verb else text}' needs a touch, "
                                      "but the hands never reach the other person")
     return Checks(metrics=m, failed=failed, windows=_merge(windows))

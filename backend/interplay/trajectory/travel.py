@@ -14,10 +14,10 @@ go "to the left" is a path that turns, not sideways travel, and keeps turning.
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
+from interplay.catalogue.grammar import STEP_TO_SIDE, words_rx
+from interplay.catalogue.load import catalogue
 from interplay.motion.kinematics import facing_angle
 
 TRAVELS = ("forward", "backward", "left", "right")
@@ -25,9 +25,12 @@ TRAVELS = ("forward", "backward", "left", "right")
 # faces away from where it goes, a step to the left faces 90° to the right of it.
 OFFSET = {"forward": 0.0, "backward": np.pi, "left": -np.pi / 2, "right": np.pi / 2}
 
-_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bbackpedal\w*|\bmoonwalk\w*")
-_SIDE = re.compile(r"\bsideways\b|\bside[\s-]?(?:steps?|stepping|shuffl\w*)\b|\bstrafe\w*|"
-                   r"\bcrab[\s-]?walk\w*|\bsteps?\s+(?:to|towards)\s+the\s+(?:left|right)\b")
+
+
+def _says(manner: str, text: str) -> bool:
+    """Do the words name the catalogue's manner ("backwards", "sideways")?"""
+    entry = catalogue().get(manner)
+    return entry is not None and words_rx(entry.words, entry.not_before).search(text) is not None
 
 
 def check(travel: str | None) -> str | None:
@@ -44,9 +47,9 @@ def spec_travel(spec) -> str | None:
     if d.get("travel") is not None:
         return check(d["travel"])
     direction, text = d.get("direction"), str(d.get("text") or "").lower()
-    if direction == "backward" and _BACK.search(text):
+    if direction == "backward" and _says("backwards", text):
         return "backward"
-    if direction in ("left", "right") and _SIDE.search(text):
+    if direction in ("left", "right") and (_says("sideways", text) or STEP_TO_SIDE.search(text) is not None):
         return direction
     return None
 

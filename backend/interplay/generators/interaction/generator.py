@@ -18,12 +18,12 @@ plan's script, so `stream` makes them again when they are not cached.
 from __future__ import annotations
 
 import dataclasses
-import re
 from collections import OrderedDict
 from collections.abc import Iterator
 
 import numpy as np
 
+from interplay.catalogue import grammar as g
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
 from interplay.generators.interaction import contest, gestures, partners, touches, travel
 from interplay.generators.interaction.bodies import SHARED
@@ -67,7 +67,6 @@ def plain(x):
     return x
 
 
-_IDLE = re.compile(r"(a person )?(stands?|waits?|remains?|stays?)( still| there| in place)?\.?", re.I)
 
 
 def _roles(plan) -> dict | None:
@@ -80,7 +79,7 @@ def _roles(plan) -> dict | None:
     out = {}
     for k in ("0", "1"):
         texts = list(dict.fromkeys(str(r[k]) for r in segs if r.get(k)))
-        busy = [t for t in texts if not _IDLE.fullmatch(t.strip())]
+        busy = [t for t in texts if not g.COMPOSE_IDLE.fullmatch(t.strip())]
         if busy or texts:
             out[k] = "; then ".join(busy or texts[:1])
     return out or None

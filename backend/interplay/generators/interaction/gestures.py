@@ -12,6 +12,7 @@ import re
 
 import numpy as np
 
+from interplay.catalogue import grammar as g
 from interplay.generators.interaction.bodies import extend, facing_pair, on_shared, refit, turn_to
 from interplay.generators.interaction.scene import Cast, clear
 from interplay.motion.checks import measures as m
@@ -23,16 +24,11 @@ from interplay.motion.skeleton import FPS
 MIRROR_LAG = 1         # frame (0.05 s) the mirroring person trails the leader
 TOGETHER_GAP_M = (1.0, 1.3)   # side by side, pelvis to pelvis, both doing the same action
 TOGETHER_LAG = 2              # frames the second trails the first when both play one clip
-_WHO = re.compile(r"\b(?:two|the two|both|a pair of|a couple of)\s+(?:of\s+them\s+)?"
-                  r"(?:people|persons|friends|men|women|kids|children|dancers|athletes)?\b|"
-                  r"\bboth\s+of\s+them\b|\bthey\b|\bboth\b", re.I)
-_TOGETHER = re.compile(r"\s*\b(?:together|at the same time|in unison|in sync\w*|"
-                       r"simultaneously|side by side|next to each other)\b", re.I)
 
 
 def solo_text(text: str) -> str:
     """One person's part of "two people jump together": "jump" (the planner's imperative)."""
-    t = _TOGETHER.sub("", _WHO.sub("", text, count=1))
+    t = g.GESTURE_TOGETHER.sub("", g.GESTURE_WHO.sub("", text, count=1))
     return re.sub(r"\s+", " ", t).strip(" ,.") or text
 
 

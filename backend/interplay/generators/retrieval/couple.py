@@ -22,14 +22,13 @@ import weakref
 
 import numpy as np
 
+from interplay.catalogue import grammar as g
 from interplay.generators.retrieval.index import Candidate, RetrievalIndex
 from interplay.generators.retrieval.stitch import Stitcher
 from interplay.motion.checks import measures as m
 from interplay.motion.checks.named import run_check
 
 # a partner spun: "spins the follower", "twirls her", "turns under his arm" (not "both spin")
-SPIN = re.compile(r"\btwirl\w*|\b(?:spin|turn)\w* (?:her|him|them|the (?:follower|partner|woman|man|"
-                  r"girl|boy|lady|other(?: person)?))\b|\bunder (?:[\w']+ ){0,4}arms?\b")
 SPIN_CHECK = {"check": "partner_spin"}
 CLOSE_CHECK = {"check": "close_together"}
 DANCE = r"\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bcouple\b"
@@ -41,7 +40,7 @@ _SPINNING: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 def asks_spin(text: str) -> bool:
     """Whether two people's words ask one of them to spin (the leader spins the follower)."""
-    return bool(SPIN.search(text.lower()))
+    return bool(g.COUPLE_SPIN.search(text.lower()))
 
 
 def spin_starts(index: RetrievalIndex) -> dict[int, np.ndarray]:

@@ -17,6 +17,8 @@ import re
 
 import numpy as np
 
+from interplay.catalogue.grammar import words_rx
+from interplay.catalogue.load import catalogue
 from interplay.generators.base import Request
 from interplay.generators.retrieval.intent import count_of
 from interplay.motion import skeleton as sk
@@ -24,7 +26,6 @@ from interplay.motion.checks import measures as ms
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 
-KICK = re.compile(r"\bkick\w*\b")
 CHAIN = ("hip", "knee", "ankle", "foot")
 HALF_S = 0.75            # the kick laid over ±this around the capture's peak
 BLEND = 5                # frames eased in and out at each kick's borders
@@ -70,7 +71,8 @@ def leg_edit(joints: np.ndarray, part: str | None, prompt: str,
              ) -> tuple[np.ndarray, dict] | None:
     """(edited joints (T, 22, 3), plan entry), or None when the edit is not one leg's kick or
     no captured kick of that leg was found."""
-    if not KICK.search(prompt or ""):
+    said = catalogue().get("kick")               # the catalogue's words for a kick
+    if said is None or not words_rx(said.words, said.not_before).search(prompt or ""):
         return None
     side = _side(part, prompt)
     if side is None:
