@@ -68,7 +68,8 @@ def test_without_tries_a_miss_is_reported_not_passed(gen):
     same, _, report = review_interaction(gen, req, plan, people, events.append,
                                          lambda s, f: None, tries=0)
     assert same is people and report["passed"] == 0
-    assert [e["verdict"] for e in events] == ["correct"]
+    assert [e["verdict"] for e in events] == ["correct", "failed"]     # the miss is the last word
+    assert report["rounds"][-1]["verdict"] == "failed" and "not fixed after 0 tries" in events[-1]["summary"]
 
 
 @pytest.mark.parametrize("prompt,checks", [

@@ -170,5 +170,14 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
                                     else "over the penetration bound")
             corrections.append(correction)
             emit(correction)
+    if best < len(specs):       # what the tries could not fix ends failed, never "correct"
+        last = rounds[-1]
+        final = {**last, "round": max(last["round"], *(c["round"] for c in corrections)) + 1
+                 if corrections else last["round"] + 1,
+                 "verdict": "failed", "instructions": [],
+                 "summary": f"{last['summary']}; not fixed after {len(corrections)} "
+                            f"{'try' if len(corrections) == 1 else 'tries'}"}
+        emit(final)
+        rounds.append(final)
     return people, plan, {"checks": specs, "rounds": rounds, "corrections": corrections,
                           "passed": best, "of": len(specs)}
