@@ -38,7 +38,10 @@ export default defineConfig({
   // Generation is CPU bound and the server runs one job at a time: one worker.
   workers: 1,
   fullyParallel: false,
-  retries: 0,
+  // In CI a failed spec runs once more, and a pass on the second run is reported as flaky, not
+  // hidden. Known flake (6 Dec 2026): path-draw's "a path applies to the next Generate only"
+  // stayed "connecting" once in five full runs, path-shown failing after it; both passed alone.
+  retries: process.env.CI ? 1 : 0,
   timeout: 180_000,
   expect: { timeout: 20_000 },
   reporter: [["list"]],
