@@ -57,3 +57,23 @@ def test_resample_keeps_duration_and_interpolates():
     y = k.resample(x, 120, 20)
     assert y.shape[0] == 21
     assert np.allclose(y[:, 0], np.arange(21) * 0.06)
+
+
+def test_continue_from_moves_later_frames_on_from_the_new_end():
+    rng = np.random.default_rng(0)
+    old = rng.normal(size=(30, 22, 3)) * 0.1
+    old[:, :, 1] += 1.0
+    new = old.copy()
+    yaw = np.pi / 3
+    c, s = np.cos(yaw), np.sin(yaw)
+    rot = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+    new[:10] = old[:10] @ rot.T + [2.0, 0.0, -1.0]
+    moved = k.continue_from(new, old[9], 10)
+    # Frame 10 relates to frame 9 as before: same step, turned with the end.
+    step_old = old[10, 0] - old[9, 0]
+    step_new = moved[10, 0] - moved[9, 0]
+    assert np.allclose(np.linalg.norm(step_old[[0, 2]]), np.linalg.norm(step_new[[0, 2]]))
+    assert np.isclose(k.facing_angle(moved[20]) - k.facing_angle(old[20]),
+                      k.facing_angle(new[9]) - k.facing_angle(old[9]))
+    assert np.allclose(moved[:10], new[:10]) and np.allclose(moved[10:, :, 1], old[10:, :, 1])
+    assert k.continue_from(new, old[29], 30) is new      # nothing after the end to move

@@ -14,12 +14,10 @@ from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.router import with_spam
 from interplay.generators.spam.generator import SpamGenerator
 from interplay.generators.spam.runtime import DEFAULT_DIR
-from interplay.motion.kinematics import facing_angle
 from interplay.pipeline.orchestrator import (
     Cancelled,
     OrchestratorConfig,
     StageError,
-    _realign,
     orchestrate,
 )
 from tests.helpers.spam_stub import StubEncoder
@@ -88,25 +86,6 @@ def test_no_review_means_no_review_events(index):
                           cfg=OrchestratorConfig(review=False))
     assert not [e for e in events if e["type"] in ("review", "correction")]
     assert out.review["segments"] == []
-
-
-def test_realign_continues_later_frames_from_the_moved_end():
-    rng = np.random.default_rng(0)
-    old = rng.normal(size=(30, 22, 3)) * 0.1
-    old[:, :, 1] += 1.0
-    new = old.copy()
-    yaw = np.pi / 3
-    c, s = np.cos(yaw), np.sin(yaw)
-    rot = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-    new[:10] = old[:10] @ rot.T + [2.0, 0.0, -1.0]
-    moved = _realign(new, old, 10)
-    # Frame 10 relates to frame 9 as before: same step, turned with the end.
-    step_old = old[10, 0] - old[9, 0]
-    step_new = moved[10, 0] - moved[9, 0]
-    assert np.allclose(np.linalg.norm(step_old[[0, 2]]), np.linalg.norm(step_new[[0, 2]]))
-    assert np.isclose(facing_angle(moved[20]) - facing_angle(old[20]),
-                      facing_angle(new[9]) - facing_angle(old[9]))
-    assert np.allclose(moved[:10], new[:10]) and np.allclose(moved[10:, :, 1], old[10:, :, 1])
 
 
 def test_cancel_and_stage_errors(index):

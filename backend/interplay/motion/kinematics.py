@@ -155,6 +155,20 @@ def facing_angle(joints: np.ndarray) -> np.ndarray:
     return np.arctan2(fwd[..., 0], fwd[..., 2])
 
 
+def continue_from(joints: np.ndarray, old_end: np.ndarray, b: int) -> np.ndarray:
+    """Frames b: of `joints` (T, 22, 3) moved rigidly (a turn about Y and a shift on the
+    floor) so that they continue from joints[b-1] the way they continued from `old_end`
+    (22, 3), the pose frame b-1 had before frames up to b were replaced."""
+    if b >= len(joints):
+        return joints
+    turn = float(facing_angle(joints[b - 1]) - facing_angle(old_end))
+    rot = yaw_matrix(np.array(turn))
+    c_old, c_new = old_end[sk.PELVIS] * [1, 0, 1], joints[b - 1, sk.PELVIS] * [1, 0, 1]
+    out = joints.copy()
+    out[b:] = (joints[b:] - c_old) @ rot.T + c_new
+    return out
+
+
 def floor_height(people: list[np.ndarray]) -> float:
     """Ground level under people (each (T, 22, 3)): a low percentile of each frame's lowest
     joint, so a single glitchy frame does not lift everyone."""

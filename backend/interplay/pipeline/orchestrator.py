@@ -28,9 +28,7 @@ from interplay.generators.base import Editor, Generator, Request
 from interplay.generators.plan import GenerationPlan, GenerationSegment
 from interplay.generators.retrieval.intent import intent
 from interplay.generators.retrieval.verify import checks as asked_checks
-from interplay.motion.kinematics import facing_angle
-from interplay.motion.rotations import yaw_matrix
-from interplay.motion.skeleton import PELVIS
+from interplay.motion.kinematics import continue_from
 from interplay.pipeline import pair_pass, pair_review
 from interplay.pipeline.segment_source import Cancelled, SegmentSource
 from interplay.pipeline.sent import OnReplace, SentFrames
@@ -96,19 +94,6 @@ def default_pair_evaluator():
         return None
 
 
-def _realign(joints: np.ndarray, old: np.ndarray, b: int) -> np.ndarray:
-    """Frames b: of `joints` moved rigidly (yaw about Y + XZ shift) so that they continue from
-    joints[b-1] the way they continued from old[b-1]."""
-    if b >= len(joints):
-        return joints
-    turn = float(facing_angle(joints[b - 1]) - facing_angle(old[b - 1]))
-    rot = yaw_matrix(np.array(turn))
-    c_old, c_new = old[b - 1, PELVIS] * [1, 0, 1], joints[b - 1, PELVIS] * [1, 0, 1]
-    out = joints.copy()
-    out[b:] = (old[b:] - c_old) @ rot.T + c_new
-    return out
-
-
 def _trajectories(people: np.ndarray, plan: GenerationPlan, trajectory: dict | None) -> int | None:
     """Apply the plan's segment trajectories (or the request's path for its person) in place;
     the first frame that moved, or None."""
@@ -131,7 +116,7 @@ def _trajectories(people: np.ndarray, plan: GenerationPlan, trajectory: dict | N
             a, b = seg.start, seg.end
             old = people[p].copy()
             people[p, a:b] = apply_trajectory(old[a:b], seg.trajectory.model_dump(mode="json"))
-            people[p] = _realign(people[p], old, b)
+            people[p] = continue_from(people[p], old[b - 1], b)
             first = a if first is None else min(first, a)
     return first
 

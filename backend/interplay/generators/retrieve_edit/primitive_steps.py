@@ -20,7 +20,7 @@ from interplay.catalogue.load import catalogue
 from interplay.generators.plan import GenerationPlan, GenerationSegment
 from interplay.generators.primitives.registry import PRIMITIVES, build, find
 from interplay.generators.retrieval.intent import count_of, side_of
-from interplay.motion.kinematics import facing_angle
+from interplay.motion.kinematics import continue_from, facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
 from interplay.planner.schema import Coverage
@@ -107,18 +107,6 @@ def _placed(prim: np.ndarray, at: np.ndarray) -> np.ndarray:
     return (prim - c_prim) @ rot.T + c_at
 
 
-def _continue(joints: np.ndarray, old_end: np.ndarray, b: int) -> np.ndarray:
-    """Frames b: moved rigidly to continue from joints[b-1] as they continued from old_end."""
-    if b >= len(joints):
-        return joints
-    turn = float(facing_angle(joints[b - 1]) - facing_angle(old_end))
-    rot = yaw_matrix(np.array(turn))
-    c_old, c_new = old_end[PELVIS] * [1, 0, 1], joints[b - 1, PELVIS] * [1, 0, 1]
-    out = joints.copy()
-    out[b:] = (joints[b:] - c_old) @ rot.T + c_new
-    return out
-
-
 def lay(joints: np.ndarray, plan: GenerationPlan) -> np.ndarray:
     """One person's (T, 22, 3) joints with every primitive segment's frames built and placed."""
     out = joints.astype(np.float64).copy()
@@ -134,7 +122,7 @@ def lay(joints: np.ndarray, plan: GenerationPlan) -> np.ndarray:
             placed[:k] = (1 - w) * out[a - 1] + w * placed[:k]
         old_end = out[b - 1].copy()
         out[a:b] = placed
-        out = _continue(out, old_end, b)
+        out = continue_from(out, old_end, b)
         k = min(EASE, len(out) - b)
         if k > 0:                       # and eased out into what follows
             w = (0.5 - 0.5 * np.cos(np.linspace(0, np.pi, k + 2)[1:-1]))[:, None, None]
