@@ -91,6 +91,22 @@ def test_cancel_ends_a_queued_job_at_once_and_flags_a_running_one(engine):
     assert store.request_cancel("unknownjobidunknownjob", event) is None
 
 
+def test_a_requeued_job_is_queued_again_once_with_its_restart_event(engine):
+    store = JobStore(engine)
+    job = _admit(store)
+    store.claim(job, "w1")
+    store.write([Write(job, 0, [{"type": "plan", "plan": {}}])])
+    rec = store.get(job)
+    event = {"type": "restart", "attempt": 2}
+    assert store.requeue(rec, owner="o2", event=event)
+    assert not store.requeue(rec, owner="o3", event=event)      # it changed since `rec`
+    again = store.get(job)
+    assert (again.state, again.worker, again.owner, again.events, again.started_at) == (
+        "queued", None, "o2", 2, None)
+    assert store.events_after(job, 0)[-1] == event
+    assert not store.requeue(again, owner="o3", event=event)    # queued, not running
+
+
 def _dead_pid() -> int:
     proc = subprocess.Popen([sys.executable, "-c", "pass"])
     proc.wait()

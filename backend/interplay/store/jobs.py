@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from datetime import datetime, timedelta, timezone
 from typing import Any
 
-from sqlalchemy import Engine, delete, func, insert, literal, select, text, update
+from sqlalchemy import ColumnElement, Engine, delete, func, insert, literal, select, text, update
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session
 
@@ -310,34 +310,27 @@ class JobStore:
         """End `rec` (if it is still in one of `from_states`, with the `events` count it had)
         as `state`, its stream's last event `event`. False when something else changed it
         first."""
-        now = _now()
-        cond = [JobRow.id == rec.id, JobRow.state.in_(from_states), JobRow.events == rec.events]
-        try:
-            with self.engine.begin() as conn:
-                n = conn.execute(update(JobRow).where(*cond).values(
-                    state=state, reason=reason, result=result, finished_at=now,
-                    events=rec.events + 1)).rowcount
-                if n != 1:
-                    return False
-                conn.execute(insert(JobEventRow).values(
-                    job_id=rec.id, seq=rec.events,
-                    body=json.dumps(event, separators=(",", ":"))))
-                self._notify(conn, [rec.id])
-        except IntegrityError:
-            return False
-        return True
+        return self._step(rec, JobRow.state.in_(from_states), event, state=state, reason=reason,
+                          result=result, finished_at=_now())
 
     def requeue(self, rec: JobRecord, *, owner: str, event: dict) -> bool:
         """A running job whose process died, queued again (if it is still running with the
         `events` count it had) for `owner` to take, its stream's next event `event` (a
         `restart`). False when something else changed it first."""
-        now = _now()
-        cond = [JobRow.id == rec.id, JobRow.state == "running", JobRow.events == rec.events]
+        return self._step(rec, JobRow.state == "running", event, state="queued", worker=None,
+                          owner=owner, heartbeat_at=_now(), started_at=None)
+
+    def _step(self, rec: JobRecord, in_state: ColumnElement[bool], event: dict,
+              **values: Any) -> bool:
+        """One transaction: `rec`'s row, if it still matches `in_state` and has the `events`
+        count it had, takes `values` and one more event, `event` is stored as that event and
+        listeners are notified. False when something else changed the row first (no row
+        matched, or another writer took the event's seq)."""
+        cond = [JobRow.id == rec.id, in_state, JobRow.events == rec.events]
         try:
             with self.engine.begin() as conn:
                 n = conn.execute(update(JobRow).where(*cond).values(
-                    state="queued", worker=None, owner=owner, heartbeat_at=now,
-                    started_at=None, events=rec.events + 1)).rowcount
+                    **values, events=rec.events + 1)).rowcount
                 if n != 1:
                     return False
                 conn.execute(insert(JobEventRow).values(
