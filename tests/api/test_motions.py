@@ -40,6 +40,15 @@ def test_unknown_or_malformed_ids_are_404_json(client, motion_id):
         assert "no motion" in r.json()["detail"] or r.json()["detail"] == "not found"
 
 
+def test_get_carries_the_digests_of_the_jobs_done_event(fake_client):
+    job, events = run_job(fake_client, prompt="a person walks", seconds=2, seed=3)
+    done = events[-1]
+    assert done["type"] == "done" and done["digest"]
+    stored = fake_client.get(f"/api/motions/{job['motion_id']}").json()
+    assert (stored["digest"], stored["frame_digests"]) == (done["digest"], done["frame_digests"])
+    assert len(stored["frame_digests"]) == len(stored["people"][0]["joints"])
+
+
 @pytest.mark.parametrize("motion_id", [MISSING, MALFORMED[0]])
 def test_a_bad_share_link_gets_the_page_with_a_404_status(client, motion_id):
     # The page then asks the API and shows its readable message (not raw JSON).

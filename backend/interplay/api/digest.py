@@ -6,7 +6,8 @@ to 0.1 mm) and as an integer number of 0.1 mm (`round(x * 10000)`, exact for bot
 browser's Float32Array of the value gives the same integer). Per frame, 32-bit FNV-1a over
 those integers as words, person by person, joint by joint, x y z: 8 hex digits. The motion's
 digest is the same hash over the frames' digests. `frontend/src/api/digest.ts` is the
-browser's copy; `tests/api/test_replace.py` checks both give the same values."""
+browser's copy; `tests/api/test_replace.py` checks both give the same values. `GET
+/api/motions/{id}` carries the stored motion's digests too."""
 
 from __future__ import annotations
 

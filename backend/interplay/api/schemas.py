@@ -142,6 +142,11 @@ class MotionOut(BaseModel):
                               " frames, trajectory}; null for a generated motion.")
     review: dict | None = Field(default=None, description="The reviewer's rounds per segment.")
     created_at: str | None
+    digest: str | None = Field(default=None, description="The frames' digest (`api.digest`), "
+                               "as the job's `done` event has it; null in an edit's or "
+                               "re-run's reply.")
+    frame_digests: list[str] | None = Field(default=None, description="One digest per frame, "
+                                            "as `done` has them; null where `digest` is.")
 
 
 class Version(BaseModel):

@@ -1,5 +1,5 @@
-"""Stored motions: GET /api/motions/{id}, its export (BVH per person, GLB or Motion JSON), and the
-skeleton description the viewer draws with."""
+"""Stored motions: GET /api/motions/{id} (with its frames' digests), its export (BVH per
+person, GLB or Motion JSON), and the skeleton description the viewer draws with."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, HTTPException, Query, Response
 
 from interplay.api.deps import RepoDep
+from interplay.api.digest import frame_digests, motion_digest
 from interplay.api.filenames import content_disposition, export_name
 from interplay.api.jobs import motion_missing
 from interplay.api.schemas import ERRORS, History, MotionOut, SkeletonOut
@@ -38,7 +39,11 @@ def _load(repo, motion_id: str) -> StoredMotion:
 
 @router.get("/motions/{motion_id}", response_model=MotionOut, responses={**ERRORS, 409: ERRORS[404]})
 def get_motion(motion_id: str, repo: RepoDep) -> dict:
-    return motion_payload(_load(repo, motion_id))
+    """The stored motion, with the digests its job's `done` event carried (computed again from
+    the stored frames, which are the ones `done` hashed)."""
+    motion = _load(repo, motion_id)
+    digests = frame_digests(motion.people)
+    return {**motion_payload(motion), "digest": motion_digest(digests), "frame_digests": digests}
 
 
 @router.get("/motions/{motion_id}/history", response_model=History, responses=ERRORS)
