@@ -18,7 +18,6 @@ saying so when neither has them.
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 from interplay.data.licences import CMU
@@ -28,7 +27,6 @@ from interplay.motion.retarget.cmu_index import read_cmu_index
 
 # (subject A, subject B): one performance per shared trial number.
 PAIRS = ((18, 19), (20, 21), (22, 23), (33, 34))
-SUBJECT_NOTE = re.compile(r"\s*\((?:2\s*)?subjects?\s*-\s*subject\s+[ab]\)\s*$", re.IGNORECASE)
 
 # Interaction kind (first match in the description) → what the two people do, for the prompt.
 KINDS: tuple[tuple[str, str, str], ...] = (
@@ -68,9 +66,28 @@ KINDS: tuple[tuple[str, str, str], ...] = (
 )
 
 
+def without_note(description: str) -> str:
+    """CMU's description without its closing "(2 subjects - subject A)" note (any case, the "2"
+    optional, any spaces around the dash)."""
+    body = description.rstrip()
+    cut = body.rfind("(")
+    if cut < 0 or not body.endswith(")"):
+        return description
+    note = body[cut + 1:-1].lower()
+    if note.startswith("2"):
+        note = note[1:].lstrip()
+    subjects, dash, rest = note.partition("-")
+    rest = rest.lstrip()
+    tail = rest[len("subject"):]
+    if (dash and subjects.rstrip() in ("subject", "subjects") and rest.startswith("subject")
+            and tail[-1:] in ("a", "b") and tail[:-1][:1].isspace() and tail[:-1].isspace()):
+        return body[:cut].rstrip()
+    return description
+
+
 def pair_kind(description: str) -> tuple[str, str]:
     """CMU's trial description → (interaction kind, prompt)."""
-    text = SUBJECT_NOTE.sub("", description).lower()
+    text = without_note(description).lower()
     for key, kind, words in KINDS:
         if key in text:
             return kind, f"two people {words}"
@@ -82,9 +99,9 @@ def _trial_files(folder: Path) -> dict[tuple[int, int], Path]:
     62ac0fb), its newer `data/0SS/SS_TT.bvh`, or one flat folder."""
     out: dict[tuple[int, int], Path] = {}
     for path in sorted(folder.rglob("*.bvh")):
-        m = re.fullmatch(r"(\d+)_(\d+)", path.stem)
-        if m:
-            out[int(m.group(1)), int(m.group(2))] = path
+        subject, _, trial = path.stem.partition("_")
+        if subject.isdecimal() and trial.isdecimal():
+            out[int(subject), int(trial)] = path
     return out
 
 
@@ -114,7 +131,7 @@ def build_cmu_pairs(raw: Path, index_csv: Path,
                     skipped.append((f"cmu-pairs/{meta['files'][0]}", meta["defects"]))
                 continue
             clips.append(Clip(id=f"cmu-pair:{a:02d}_{trial:02d}", source="cmu-pairs", people=people,
-                              offsets=offsets, label=SUBJECT_NOTE.sub("", description), prompt=prompt,
+                              offsets=offsets, label=without_note(description), prompt=prompt,
                               licence=CMU.name, meta=meta))
     return clips
 

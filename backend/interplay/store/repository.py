@@ -4,7 +4,7 @@ so callers never hold a session or a detached ORM object. With a retention polic
 
 from __future__ import annotations
 
-import re
+import string
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 
@@ -13,15 +13,16 @@ from sqlalchemy import Engine, func, select
 from sqlalchemy.orm import Session, load_only
 
 from interplay.motion.skeleton import FPS, NUM_JOINTS
-from interplay.store.models import ID_PATTERN, MotionRow, new_id
+from interplay.store.models import MotionRow, new_id
 from interplay.store.retention import Retention, enforce
 
-_ID_RE = re.compile(ID_PATTERN)
+# the characters and lengths of `models.ID_PATTERN`
+_ID_CHARS = frozenset(string.ascii_letters + string.digits + "_-")
 
 
 def valid_id(value: str) -> bool:
     """Whether `value` has the shape of an id this store hands out (cheap check before a query)."""
-    return bool(_ID_RE.match(value))
+    return 22 <= len(value) <= 64 and _ID_CHARS.issuperset(value)
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import ast
 import json
-import re
 import subprocess
 from collections.abc import Iterable
 from pathlib import Path
@@ -31,9 +30,7 @@ PACKAGE = "backend/interplay"
 EXCLUDED = ("backend/interplay/eval/", "backend/interplay/motion/checks/")
 SNAPSHOT = Path(__file__).resolve().parents[1] / "data" / "fresh_vocabulary.json"
 
-_ESCAPE = re.compile(r"\\[A-Za-z]")                        # \b \s \w \d … in a regex source
-_HUMP = re.compile(r"([a-z])([A-Z])")
-_WORD = re.compile(r"[a-z]+")
+_LOWER, _UPPER = "abcdefghijklmnopqrstuvwxyz", "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 
 
 # Words a prompt cannot do without and that name no action, so they are not held to the
@@ -50,13 +47,15 @@ each other both either some any all few several
 one two three four five six seven eight nine ten once twice times
 person people someone somebody left right then while
 """.split())
-_TOKEN = re.compile(r"[a-z]+")
+def _letter_runs(text: str) -> list[str]:
+    """The runs of the letters a to z in `text`."""
+    return "".join(c if c in _LOWER else " " for c in text).split()
 
 
 def tokens(text: str) -> list[str]:
     """Lower-case words of a prompt (hyphens and apostrophes split words: "pinky-swear",
     "buddy's" → "pinky", "swear"; "buddy", "s")."""
-    return _TOKEN.findall(text.lower())
+    return _letter_runs(text.lower())
 
 
 def content_words(text: str) -> list[str]:
@@ -132,8 +131,10 @@ def _docstrings(tree: ast.AST) -> set[int]:
 
 def words_of_text(text: str) -> set[str]:
     """Lower-case words of one string literal (regex escapes dropped, camelCase split)."""
-    text = _HUMP.sub(r"\1 \2", _ESCAPE.sub(" ", text))
-    return set(_WORD.findall(text.lower()))
+    first, *after = text.split("\\")               # a backslash and a letter: \b \s \w \d …
+    text = first + "".join(" " + p[1:] if p[:1] and p[0] in _LOWER + _UPPER else "\\" + p for p in after)
+    humps = "".join(c + " " if c in _LOWER and n in _UPPER else c for c, n in zip(text, text[1:] + " "))
+    return set(_letter_runs(humps.lower()))
 
 
 def words_of_source(source: str) -> set[str]:

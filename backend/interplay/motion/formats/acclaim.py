@@ -18,7 +18,6 @@ times the `length` scale, so `length 0.45` means one unit is 1/0.45 inch).
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -199,9 +198,6 @@ def _parents_first(parents: dict[str, str]) -> list[str]:
     return order
 
 
-_FRAME_LINE = re.compile(r"^\d+$")
-
-
 def read_amc(source: str | Path) -> Amc:
     """Parse an AMC file (path or text): per bone, the values of every frame."""
     degrees = None
@@ -218,7 +214,7 @@ def read_amc(source: str | Path) -> Amc:
             elif head.startswith(":DEGREES"):
                 degrees = True
             continue
-        if _FRAME_LINE.match(line):
+        if line.isdecimal():                     # a frame number
             frames.append(int(line))
             continue
         if not frames:

@@ -17,7 +17,6 @@ Blender) and joint names (SMPL's, or Mixamo-style for rigs that map bones by nam
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -45,7 +44,39 @@ from interplay.motion.kinematics import forward_kinematics
 from interplay.motion.rig import end_sites
 from interplay.motion.rotations import axis_rotation, euler_to_matrix, matrix_to_euler
 
-_CHANNEL = re.compile(r"^([XYZ])(position|rotation)$", re.IGNORECASE)
+
+def _channel(name: str) -> tuple[str, str] | None:
+    """A channel name's (axis, kind): "Xposition" → ("X", "position"), any case; None if not one."""
+    axis, kind = name[:1].upper(), name[1:].lower()
+    return (axis, kind) if axis in ("X", "Y", "Z") and kind in ("position", "rotation") else None
+
+
+def _section(text: str, word: str) -> tuple[int, int] | None:
+    """(start, end) of the first line that holds only `word` (any case, spaces around it)."""
+    at = 0
+    for line in text.split("\n"):
+        if line.strip().upper() == word:
+            return at, at + len(line)
+        at += len(line) + 1
+    return None
+
+
+def _after(text: str, *words: str) -> str | None:
+    """The text after `words` at its start (any case; spaces before the first, at least one
+    between the others, any after the last), or None when it does not start so."""
+    for i, word in enumerate(words):
+        if i and not text[:1].isspace():
+            return None
+        text = text.lstrip()
+        if text[:len(word)].lower() != word.lower():
+            return None
+        text = text[len(word):]
+    return text.lstrip()
+
+
+def _digits(text: str) -> str:
+    """The digits `text` starts with."""
+    return text[:next((i for i, c in enumerate(text) if not c.isdecimal()), len(text))]
 
 
 @dataclass(frozen=True, eq=False)
@@ -99,9 +130,9 @@ class Bvh:
             order = ""
             rcols = []
             for c, col in zip(chans, cols):
-                match = _CHANNEL.match(c)
+                match = _channel(c)
                 assert match is not None                # parsing rejected any other channel
-                axis, kind = match.groups()
+                axis, kind = match
                 if kind.lower() == "position":
                     trans[:, j, "XYZ".index(axis.upper())] = self.motion[:, col]
                 else:
@@ -241,7 +272,7 @@ def _parse_hierarchy(tokens: list[str]):
             except (IndexError, ValueError):
                 raise ValueError("CHANNELS needs a count") from None
             chans = tuple(tokens[i + 2:i + 2 + count])
-            bad = [c for c in chans if not _CHANNEL.match(c)]
+            bad = [c for c in chans if not _channel(c)]
             if len(chans) != count or bad:
                 raise ValueError(f"bad CHANNELS for {names[stack[-1][1]]}: {chans}")
             channels[stack[-1][1]] = chans
@@ -258,22 +289,22 @@ def _parse_hierarchy(tokens: list[str]):
 def read_bvh(text_or_path: str | Path) -> Bvh:
     """Parse BVH text (or a path to a .bvh file)."""
     text = _read_text(text_or_path)
-    head = re.search(r"^\s*HIERARCHY\s*$", text, re.MULTILINE | re.IGNORECASE)
-    motion = re.search(r"^\s*MOTION\s*$", text, re.MULTILINE | re.IGNORECASE)
-    if head is None or motion is None or motion.start() < head.end():
+    head, motion = _section(text, "HIERARCHY"), _section(text, "MOTION")
+    if head is None or motion is None or motion[0] < head[1]:
         raise ValueError("not a BVH file: expected a HIERARCHY section followed by MOTION")
-    names, parents, offsets, channels, end_sites = _parse_hierarchy(text[head.end():motion.start()].split())
-    rest = text[motion.end():]
-    frames = re.match(r"\s*Frames:\s*(\d+)\s*", rest, re.IGNORECASE)
-    ftime = frames and re.match(r"Frame\s+Time:\s*(\S+)", rest[frames.end():], re.IGNORECASE)
-    if not frames or not ftime:
+    names, parents, offsets, channels, end_sites = _parse_hierarchy(text[head[1]:motion[0]].split())
+    after = _after(text[motion[1]:], "Frames:")
+    count = _digits(after or "")
+    after = _after(after[len(count):], "Frame", "Time:") if after and count else None
+    if not after:
         raise ValueError("MOTION must start with 'Frames: N' and 'Frame Time: seconds'")
-    n_frames, frame_time = int(frames.group(1)), float(ftime.group(1))
+    value = after.split(maxsplit=1)[0]
+    n_frames, frame_time, data = int(count), float(value), after[len(value):]
     if not frame_time > 0:
         raise ValueError(f"Frame Time must be positive, got {frame_time}")
     width = sum(len(c) for c in channels)
     try:
-        values = np.array(rest[frames.end() + ftime.end():].split(), dtype=np.float64)
+        values = np.array(data.split(), dtype=np.float64)
     except ValueError:
         raise ValueError("MOTION data holds something that is not a number") from None
     if values.size < n_frames * width:

@@ -53,7 +53,6 @@ sideways, where the pelvis goes; means over each content's clips, all styles):
 from __future__ import annotations
 
 import json
-import re
 from pathlib import Path
 
 import numpy as np
@@ -67,7 +66,7 @@ from interplay.motion.retarget.checks import decide_rate, settle
 BANDAI_FPS = 30.0
 FPS_CANDIDATES = (30.0, 60.0)
 CENTIMETRE = 0.01
-FILE_NAME = re.compile(r"^dataset-(\d)_(.+)_([a-z-]+)_(\d+)$")
+_STYLE_CHARS = frozenset("abcdefghijklmnopqrstuvwxyz-")
 
 JOINT_MAP: dict[str, JointSource] = {
     "pelvis": (("Hips", 0.6), ("Spine", 0.4)),
@@ -169,10 +168,12 @@ def bandai_prompt(content: str, style: str) -> str:
 
 def parse_name(path: str | Path) -> dict:
     """dataset-N_{content}_{style}_{take}.bvh → {"dataset", "content", "style", "take"}."""
-    m = FILE_NAME.match(Path(path).stem)
-    if not m:
+    # dataset-N_{content}_{style}_{take}: the last two underscores end the content (it may hold some)
+    head, style, take = ([""] * 3 + Path(path).stem.rsplit("_", 2))[-3:]
+    prefix, dataset, gap, content = head[:8], head[8:9], head[9:10], head[10:]
+    if not (prefix == "dataset-" and dataset.isdecimal() and gap == "_" and content
+            and style and set(style) <= _STYLE_CHARS and take.isdecimal()):
         raise ValueError(f"{path}: not a Bandai Namco file name (dataset-N_content_style_take)")
-    dataset, content, style, take = m.groups()
     return {"dataset": int(dataset), "content": content, "style": style, "take": int(take)}
 
 

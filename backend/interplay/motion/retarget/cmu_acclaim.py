@@ -17,7 +17,6 @@ walk and 09_06's run) is recorded per clip in meta["fps_evidence"].
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import numpy as np
@@ -29,15 +28,14 @@ from interplay.motion.retarget.hdm05 import JOINT_MAP
 
 CMU_FPS = 120.0
 FPS_CANDIDATES = (120.0, 60.0)
-AMC_NAME = re.compile(r"^(\d+)_(\d+)(?:-.*)?$")
 
 
 def trial_of(amc_path: str | Path) -> tuple[int, int]:
     """NN_TT[-label].amc → (subject, trial)."""
-    m = AMC_NAME.match(Path(amc_path).stem)
-    if not m:
+    subject, _, trial = Path(amc_path).stem.partition("-")[0].partition("_")
+    if not (subject.isdecimal() and trial.isdecimal()):
         raise ValueError(f"{amc_path}: not a CMU AMC name (NN_TT.amc or NN_TT-label.amc)")
-    return int(m.group(1)), int(m.group(2))
+    return int(subject), int(trial)
 
 
 def find_asf(amc_path: str | Path) -> Path:
