@@ -4,7 +4,7 @@
 import { ApiError, cancelJob, createJob, getHistory, getJob, getMotion, getSkeleton, motionIdFromPath } from "./api/client";
 import { intentKey, recalledRequest, rememberRequest, resumeFromSearch, resumeUrl } from "./api/intent";
 import { refreshLibrary, showLibrary, watchLibrary } from "./library";
-import { openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
+import { initialStream, openStream, reduceStream, startStream, type StreamHandle } from "./api/stream";
 import { retryStream } from "./api/retry";
 import { agentFromReview } from "./api/agent";
 import type { JobRequest, Motion, StreamEvent, Trajectory } from "./api/types";
@@ -22,6 +22,16 @@ let pendingPersons: number | null = null;
 const FROM_FRAMES = -1;
 /** A Generate whose POST is in flight (a second one is ignored until it answers). */
 let starting = false;
+/** Counts the actions that take the stage (a Generate, a reactor, a motion opened, a job
+ * followed): one still waiting on the server when a later one came leaves the stage alone. */
+let turn = 0;
+
+/** Close the stream followed now, if any (an action that waited on the server may find one
+ * opened meanwhile). */
+function dropStream(): void {
+  stream?.close();
+  stream = null;
+}
 
 export function message(err: unknown): string {
   if (err instanceof ApiError || err instanceof Error) return err.message;
@@ -93,8 +103,9 @@ function handleEvent(ev: StreamEvent): void {
   }
 }
 
-/** The drawn path the running job was sent with (it applies to that one Generate). */
+/** The drawn path the running job was sent with (it applies to that one Generate), and that job. */
 let sentPath: unknown = null;
+let sentJob: string | null = null;
 
 /** A generation that followed the drawn path is done: the path is used up (it applied to that
  * Generate only), unless a new one was drawn meanwhile. A failed or cancelled one keeps it. */
@@ -106,6 +117,7 @@ function usePathUp(): void {
   }
   if (sentPath !== null && s.path.points === sentPath) s.setPath({ points: [], preset: null });
   sentPath = null;
+  sentJob = null;
 }
 
 /** The URL of the job being followed (`/?job=…`, kept across a reload) gives way to the stored
@@ -176,6 +188,7 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
   const running = before.stream.phase === "connecting" || before.stream.phase === "generating";
   if (starting || (running && (before.intent?.key === key || before.stream.mode === "react"))) return;
   starting = true;
+  const mine = ++turn;
   useStudio.setState({ intent: { key, starting: true } });
   if (running && before.stream.jobId) void cancelJob(before.stream.jobId).catch(() => undefined);
   stream?.close();
@@ -187,12 +200,18 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
     job = await createJob(req);
   } catch (err) {
     useStudio.setState({ intent: null });
+    // the running job was cancelled and its stream closed above: it ends here (its own last
+    // event will not come), so the stage does not wait on it
+    if (running && mine === turn) handleEvent({ type: "error", message: "cancelled", cancelled: true });
     fail(err);
     return;
   } finally {
     starting = false;
   }
+  turn++; // the new job takes the stage, also from a job followed while its POST was in flight
+  dropStream();
   sentPath = req.trajectory && !override.trajectory ? useStudio.getState().path.points : null;
+  sentJob = job.job_id;
   window.history.pushState(null, "", resumeUrl(job.job_id, job.motion_id));
   rememberRequest(job.job_id, req);
   frames.reset(req.persons);
@@ -214,26 +233,40 @@ export async function generate(override: Partial<JobRequest> = {}): Promise<void
  * first event (`resumeJob`: a job the restarted server runs again, a done motion, or one gone). */
 async function reconnect(jobId: string): Promise<void> {
   stream = null;
+  const mine = turn; // any later action (a Generate, a motion opened, …) ends the retries
   const show = (reconnecting: { attempt: number; nextInS: number } | null) =>
     useStudio.setState((s) => ({ stream: { ...s.stream, reconnecting } }));
   await retryStream({
-    current: () => useStudio.getState().stream.jobId === jobId && stream === null,
+    current: () => turn === mine && useStudio.getState().stream.jobId === jobId && stream === null,
     show,
     reachable: () => getJob(jobId).then(() => true, (err) => err instanceof ApiError && err.status === 404),
-    resume: () => resumeJob(jobId, resumeFromSearch(window.location.search)?.motion ?? null),
+    resume: () => follow(jobId, resumeFromSearch(window.location.search)?.motion ?? null, mine),
     giveUp: () => handleEvent({ type: "error", message: "the server did not come back; reload the page to try again" }),
   });
+}
+
+/** The page stops following job `jobId` (it ended without a motion, or is unknown): a stage
+ * still waiting on it (its stream dropped and was being followed again) goes idle. */
+function stopFollowing(jobId: string): void {
+  if (useStudio.getState().stream.jobId === jobId) useStudio.setState({ stream: initialStream });
 }
 
 /** After a reload with `?job=…`: follow that job again (its stream replays every event from
  * the start), or open its motion if it is done; if the server no longer knows it, say so and
  * show My motions. */
-export async function resumeJob(jobId: string, motionId: string | null): Promise<void> {
+export function resumeJob(jobId: string, motionId: string | null): Promise<void> {
+  return follow(jobId, motionId, ++turn);
+}
+
+/** `resumeJob` on the stage's turn `mine` (a retry follows on the turn it started in). */
+async function follow(jobId: string, motionId: string | null, mine: number): Promise<void> {
   let status;
   try {
     status = await getJob(jobId);
   } catch (err) {
-    if (!(err instanceof ApiError) || err.status >= 500) {
+    if (mine !== turn) return; // the page moved on meanwhile (a Generate, a motion opened)
+    // ApiError 0: no answer at all (api/client.ts)
+    if (!(err instanceof ApiError) || err.status === 0 || err.status >= 500) {
       // the server is away (restarting): keep the job's URL and try again
       useStudio.setState({ stream: startStream(null, jobId) });
       stream = null;
@@ -241,25 +274,33 @@ export async function resumeJob(jobId: string, motionId: string | null): Promise
       return;
     }
     if (err.status !== 404) {
+      stopFollowing(jobId);
       fail(err);
       return;
     }
     // gone (expired, or the server restarted): its motion may still be stored
-    if (motionId && (await getMotion(motionId).then(() => true, () => false))) {
+    const stored = motionId !== null && (await getMotion(motionId).then(() => true, () => false));
+    if (mine !== turn) return;
+    if (motionId && stored) {
       window.history.replaceState({ motionId }, "", `/m/${motionId}`);
       await openMotion(motionId);
       return;
     }
+    stopFollowing(jobId);
     window.history.replaceState(null, "", "/");
     showLibrary("The generation this page was following is no longer on the server (it expired or the server restarted). Your motions are below.");
     return;
   }
+  if (mine !== turn) return;
   if (status.status === "done") {
     window.history.replaceState({ motionId: status.motion_id }, "", `/m/${status.motion_id}`);
     await openMotion(status.motion_id);
+    // the job this page sent with the drawn path ended while its stream was away
+    if (sentJob === jobId && useStudio.getState().motionId === status.motion_id) usePathUp();
     return;
   }
   if (status.status === "failed" || status.status === "cancelled") {
+    stopFollowing(jobId);
     window.history.replaceState(null, "", "/");
     showLibrary(`The generation this page was following ended without a motion${status.reason ? ` (${status.reason})` : ""}.`);
     return;
@@ -305,6 +346,7 @@ export async function resumeJob(jobId: string, motionId: string | null): Promise
 export async function react(intent: string): Promise<void> {
   const { motionId, motionPersons } = useStudio.getState();
   if (!motionId || motionPersons !== 1) return;
+  turn++;
   stream?.close();
   stream = null;
   useStudio.setState({ error: null, selected: null, range: null });
@@ -365,11 +407,13 @@ export function showMotion(motion: Motion): void {
 
 /** Load a stored motion (a share link, a version) into the scene, and its version history. */
 export async function openMotion(id: string): Promise<void> {
+  const mine = ++turn;
   stream?.close();
   stream = null;
   pendingPersons = null;
   try {
     const motion = await getMotion(id);
+    if (mine !== turn) return; // a later action took the stage meanwhile
     showMotion(motion);
     const known = useStudio.getState().versions;
     if (known.ids.includes(id)) {
