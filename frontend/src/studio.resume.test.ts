@@ -30,10 +30,17 @@ class FakeSocket {
 type Answer = { status: number; body: unknown } | "unreachable" | Promise<{ status: number; body: unknown }>;
 /** GET /api/jobs/{id}: the answers to give, in turn (the last one again when they run out). */
 let jobAnswers: Record<string, Answer[]> = {};
+/** GET /api/motions/{id}: the stored motions. */
+let motions: Record<string, object> = {};
 let calls: { method: string; url: string }[] = [];
 let jobs = 0;
 
 const running = (id: string) => ({ status: 200, body: { job_id: id, motion_id: `m-${id}`, status: "running", events: 3, stream: `/api/jobs/${id}/stream`, attempts: 1 } });
+const motion = (id: string) => ({
+  id, prompt: "a person walks forward", persons: 1, seconds: 0.1, seed: 1, fps: 20, skeleton: "smpl22",
+  people: [{ joints: [Array.from({ length: 22 }, () => [0, 1, 0])] }],
+  plan: null, metrics: null, highlights: null, parent_id: null, edit: null, review: null, created_at: null,
+});
 const ended = (id: string, status: "failed" | "cancelled", reason: string) => ({ status: 200, body: { ...running(id).body, status, reason } });
 
 beforeEach(() => {
@@ -41,6 +48,7 @@ beforeEach(() => {
   calls = [];
   jobs = 0;
   jobAnswers = {};
+  motions = {};
   FakeSocket.opened = [];
   const history = {
     url: "/",
@@ -66,6 +74,8 @@ beforeEach(() => {
       }
       if (method === "DELETE") return new Response(JSON.stringify({ cancelled: true }), { status: 200 });
       const job = /^\/api\/jobs\/(\w+)$/.exec(url)?.[1];
+      const stored = /^\/api\/motions\/([\w-]+)$/.exec(url)?.[1];
+      if (stored) return new Response(JSON.stringify(motions[stored] ?? { detail: "no motion" }), { status: motions[stored] ? 200 : 404 });
       if (job) {
         const queue = jobAnswers[job] ?? [{ status: 404, body: { detail: "no job" } }];
         const answer = await (queue.length > 1 ? queue.shift()! : queue[0]);
@@ -131,6 +141,21 @@ describe("a dropped stream followed again", () => {
     expect(useStudio.getState().stream.phase).toBe("idle");
     expect(useLibrary.getState().notice).toContain("out of memory");
     expect(window.location.pathname + window.location.search).toBe("/");
+  });
+
+  it("the job sent with the drawn path found done: its motion is shown and the path is used up", async () => {
+    const { generate, useStudio } = await studio();
+    const points: [number, number][] = [[0, 0], [1, 1], [2, 1]];
+    useStudio.getState().setPath({ points });
+    await generate();
+    expect(useStudio.getState().path.points).toBe(points); // pending until the job is done
+    jobAnswers.job1 = [{ status: 200, body: { ...running("job1").body, status: "done" } }];
+    motions["m-job1"] = motion("m-job1");
+    FakeSocket.opened[0].drop();
+    await settle();
+    expect(useStudio.getState().stream).toMatchObject({ phase: "done", motionId: "m-job1" });
+    expect(useStudio.getState().path.points).toEqual([]);
+    expect(window.location.pathname).toBe("/m/m-job1");
   });
 
   it("a new Generate while the earlier job is asked for again: the new job keeps the stage", async () => {
