@@ -112,30 +112,7 @@ def test_a_hand_on_the_floor_keeps_its_tip_above_it(wave):
     assert np.all(tip[:, 1] >= np.minimum(floor + HAND_THICK, wrist_y) - 0.005)
 
 
-def test_hands_on_the_floor_do_not_spin():
-    """The library's floor work (a wrist or knee within 25 cm of the floor), where hands are
-    pushed up off the floor: a wrist turns at most 30° a frame, or as much as its forearm
-    does, on all but a handful of frames (43 of 142,793 over the whole library, worst 26°
-    over; before headings were kept, 149°)."""
-    from interplay.motion.clip import default_clips
-    from interplay.motion.formats.floor import goes_low
-    from interplay.motion.kinematics import floor_height
-    over, steps_seen, worst = 0, 0, 0.0
-    for clip in default_clips():
-        people = [np.asarray(p, np.float64) for p in clip.people]
-        floor = floor_height(people)
-        if not goes_low(people, floor):
-            continue
-        for joints in people:
-            rig = solve_rig(joints, floor=floor)
-            for side in ("left", "right"):
-                turn = steps(rig.rotations[:, J[f"{side}_wrist"]])
-                excess = turn - np.maximum(30.0, bone_step(joints, J[f"{side}_elbow"], J[f"{side}_wrist"]))
-                over += int((excess > 0).sum())
-                steps_seen += len(turn)
-                worst = max(worst, float(excess.max()))
-    assert steps_seen > 10_000
-    assert over / steps_seen < 2e-3 and worst < 45.0, (over, worst)
+# The library's steps (hands on the floor included): tests/motion/test_rig_steps.py.
 
 
 def test_the_bvh_and_glb_carry_the_wrist_and_head_turns(wave):

@@ -129,6 +129,43 @@ def cmd_export_channels(args) -> int:
     return 0
 
 
+def cmd_export_leaves(args) -> int:
+    """The leaves' steps on the library (`rig/steps.py`): per leaf, how many frame steps of
+    its channel exceed max(30°, its parent bone's turn) and by how much at worst, against the
+    bone's whole turn (the test's measure) and against its direction's turn only."""
+    import numpy as np
+
+    from interplay.motion.clip import default_clips
+    from interplay.motion.kinematics import floor_height
+    from interplay.motion.rig import solve_rig
+    from interplay.motion.rig.steps import LEAF_PARENTS, leaf_excess
+    clips = default_clips()[::args.every]
+    over: dict[tuple[str, bool], list] = {(leaf, a): [0, 0.0] for leaf in LEAF_PARENTS for a in (False, True)}
+    seen, worst_at = 0, []
+    for clip in clips:
+        people = [np.asarray(p, np.float64) for p in clip.people]
+        floor = floor_height(people)
+        for k, joints in enumerate(people):
+            rig = solve_rig(joints, floor=floor)
+            seen += max(rig.frames - 1, 0)
+            for along in (False, True):
+                for leaf, excess in leaf_excess(rig, direction=along).items():
+                    bad = excess > 0
+                    over[leaf, along][0] += int(bad.sum())
+                    over[leaf, along][1] = max(over[leaf, along][1], float(excess.max(initial=0.0)))
+                    if not along:
+                        worst_at += [(float(excess[i]), clip.id, k, leaf, int(i) + 1) for i in np.flatnonzero(bad)]
+    print(f"{len(clips)} library clips, {seen} frame steps per leaf: steps over max(30°, the parent "
+          f"bone's turn) and the worst excess (deg)")
+    print(f"{'leaf':<12} {'bone: over':>10} {'worst':>6} {'direction: over':>15} {'worst':>6}")
+    for leaf in LEAF_PARENTS:
+        bone, line = over[leaf, False], over[leaf, True]
+        print(f"{leaf:<12} {bone[0]:>10} {bone[1]:>6.1f} {line[0]:>15} {line[1]:>6.1f}")
+    for over_by, cid, k, leaf, frame in sorted(worst_at, reverse=True)[:10]:
+        print(f"  {cid} person {k} {leaf} frame {frame}: {over_by:.1f}° over")
+    return 0
+
+
 def register(sub) -> None:
     p = sub.add_parser("metrics", help="clip metrics of a motion JSON file")
     p.add_argument("motion")
@@ -163,3 +200,8 @@ def register(sub) -> None:
                                                "clips, fixed vs per-file Euler orders (a table)")
     p.add_argument("--every", type=int, default=1, help="every n-th clip (default all, ~2 min)")
     p.set_defaults(func=cmd_export_channels)
+
+    p = sub.add_parser("export-leaves", help="head, wrist and toe steps a frame over max(30°, the "
+                                             "parent bone's turn) on the library's clips (a table)")
+    p.add_argument("--every", type=int, default=1, help="every n-th clip (default all, ~1 min)")
+    p.set_defaults(func=cmd_export_leaves)

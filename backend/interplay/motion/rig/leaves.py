@@ -4,9 +4,14 @@ the head turns on the neck by HEAD_SHARE of the neck's own turn (a nod, which ti
 neck→head bone, pitches the face further; smooth wherever the neck is); each hand trails its
 forearm's swing with a lag of HAND_LAG seconds, bent at most HAND_BEND (a wave turns the hand
 to and fro); explicit per-frame rotations (`leaves=`, e.g. from an edit) replace either. Then
-no leaf's tip goes under the floor: a toe whose tip (the end site) would dip pitches up just
-enough (a flat foot's toes lie on the floor), and so does a hand whose mesh tip (HAND_REACH
-along it, HAND_THICK thick) would.
+no leaf's tip goes under the floor: a toe whose tip (the end site) would dip bends up about
+its own side-to-side axis just enough (a flat foot's toes lie on the floor), and so does a
+hand whose mesh tip (HAND_REACH along it, HAND_THICK thick) would, towards its back; both
+bends start before the leaf reaches the floor and change at most LIFT_RATE (`_floor_bend`).
+
+Each leaf's channel so turns at most max(30°, its parent bone's turn) a frame on every clip
+of the library (`rig/steps.py`, `interplay export-leaves`; issue 27: before the bends were
+hinges spread over frames, 43 wrist and 265 toe steps did not, by up to 26° and 40°).
 """
 
 from __future__ import annotations
@@ -17,25 +22,32 @@ import numpy as np
 
 from interplay.motion import skeleton as sk
 from interplay.motion.rig.base import _perp, _unit, slerp
-from interplay.motion.rotations import matrix_to_quat, quat_to_matrix, rotation_between
+from interplay.motion.rotations import (
+    axis_angle_to_matrix,
+    matrix_to_quat,
+    quat_to_matrix,
+    rotation_between,
+)
 
 J = sk.JOINT_INDEX
 # The leaves (joints with no child): their rotations are not in the joints (see above).
 LEAVES: tuple[str, ...] = ("head", "left_wrist", "right_wrist")
 HEAD_SHARE = 0.5                 # the head's turn on the neck, as a share of the neck's
 HAND_LAG = 0.08                  # s: the hand follows its forearm's direction with this lag
-HAND_BEND = np.deg2rad(40.0)     # the lag bends the wrist at most this much
+# The lag bends the wrist at most this much. 30°, not more: a forearm reversing its swing
+# flips the lag's bend to the other side in a frame, (1 - a)·swing + a·HAND_BEND with a
+# the lag's share a frame (0.46 at 20 fps), over 30° for swings of 22–40° when it was 40°.
+HAND_BEND = np.deg2rad(30.0)
 # The studio's mesh hand (`formats/humanoid.py`) on the template: its length from the wrist
 # and its half thickness (m); scaled to the person.
 HAND_REACH, HAND_THICK = 0.175, 0.024
-# A leaf tip pushed up off the floor turns its heading slowly: each frame the last heading
-# weighs this much against the tip's own horizontal direction (length ≤ 1; where the tip
-# is nearly level, hardly any push is needed and the heading hardly matters).
-# (Toes keep none: their tips point forward, well away from straight down; the library's
-# toe steps grow with it.)
-_HAND_HEADING_MEMORY = 2.0
+# rad/s: how fast a leaf's bend off the floor may change (`_floor_bend`): 15° a frame at
+# 20 fps, half the 30° a frame the leaves' turns keep within.
+LIFT_RATE = np.deg2rad(300.0)
+LIFT_MOST = np.pi / 2            # a toe or wrist bends up at most this much off the floor (a
+                                 # leaf upside down: the rest is the exports' floor pass's)
 _TOES = (J["left_foot"], J["right_foot"])
-_Z = np.array([0.0, 0.0, 1.0])
+_Y, _Z = np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.0, 1.0])
 
 
 def end_sites(offsets: np.ndarray) -> dict[int, np.ndarray]:
@@ -57,45 +69,41 @@ def _body_scale(offsets: np.ndarray) -> float:
                  / np.linalg.norm(sk.REST_OFFSETS[1:], axis=1).sum())
 
 
-def _headings(flat: np.ndarray, ref: np.ndarray, memory: float) -> np.ndarray:
-    """Unit horizontal headings (T, 3) that follow the horizontal directions `flat` (T, 3)
-    where they are long and keep the previous frame's where they vanish (a leaf pointing
-    straight down has no heading of its own), `ref` (T, 3) breaking ties."""
-    out = np.empty_like(flat)
-    prev = np.zeros(3)
-    for i in range(len(flat)):
-        h = flat[i] + memory * prev + 1e-3 * ref[i]
-        n = float(np.linalg.norm(h))
-        prev = h / n if n > 1e-12 else np.array([0.0, 0.0, 1.0])
-        out[i] = prev
-    return out
-
-
-def _tip_above_floor(height: np.ndarray, glob_leaf: np.ndarray, rest_dir: np.ndarray,
-                     length: float, ref: np.ndarray, memory: float = 0.0) -> np.ndarray:
-    """World pitches (T, 3, 3) for a leaf joint: identity unless its tip (`length` along
-    `rest_dir`, in its rest frame) would be under the floor, the joint being `height` (T,)
-    above it; then the least turn up that puts the tip on the floor, or level with the joint
-    when the joint itself is under it. The tip keeps its horizontal direction and is pushed
-    out along a heading that follows it over time (`_headings`; `ref` (T, 3): a direction
-    for ties, the parent bone's; `memory`: how much the last heading weighs, 0: none, the
-    tip turns up in its own vertical plane), so a tip pointing straight down does not spin:
-    continuous in the pose and in time."""
-    tip = glob_leaf @ rest_dir                                   # tip direction, world (T, 3)
-    want = np.clip(-height / length, -1.0, 0.0)                  # lowest allowed tip direction y
-    low = tip[:, 1] < want
-    flat = tip * np.array([1.0, 0.0, 1.0])
-    heading = _headings(flat, ref * np.array([1.0, 0.0, 1.0]), memory)
-    # The horizontal part grown along the heading to the length sqrt(1 - want²) (the least
-    # push: none where the tip is just at `want`).
-    r2 = 1.0 - want ** 2
-    fh = np.sum(flat * heading, axis=-1)
-    push = -fh + np.sqrt(np.maximum(fh ** 2 - np.sum(flat * flat, axis=-1) + r2, 0.0))
-    target = flat + push[:, None] * heading
-    target[:, 1] = want
-    target = _unit(target)
-    return np.where(low[:, None, None], rotation_between(tip, np.where(low[:, None], target, tip)),
-                    np.eye(3))
+def _floor_bend(height: np.ndarray, frame: np.ndarray, tip: np.ndarray, length: float,
+                rate: float) -> np.ndarray:
+    """Bends (T,) (rad) of a leaf off the floor: the leaf turns as a hinge in its own frame,
+    its tip (`length` along the unit `tip`, rest frame) towards its own up (rest +Y: a foot's
+    top, the back of a hand; a toe flexes up, a wrist extends), by the least angle that keeps
+    the tip off the floor, the leaf joint being `height` (T,) above it; `frame` (T, 3, 3): the
+    leaf's world rotation before the bend. Then the bend is spread over time, changing at
+    most `rate` a frame: it starts before the leaf reaches the floor and eases off after it
+    leaves (a hand coming down 9 cm a frame needs no bend, then 49°: now it bends 15° a frame
+    as it comes down), as r[t] grown to max over frames s of r[s] - rate·|t - s| (a forward
+    and a backward pass; so a tip leaving the floor fast may point above level for a frame
+    or two), at most LIFT_MOST. The bend alone is the leaf's turn
+    off the floor, about one axis of its own frame, so it cannot spin where the tip points
+    straight down (a tip pushed out along its own horizontal direction did: those few
+    centimetres flip side frame to frame, 40–70° turns of a toe or hand in a frame)."""
+    up = _unit(_perp(_Y, tip))
+    t_y, w_y = (frame @ tip)[:, 1], (frame @ up)[:, 1]           # world heights of tip and up
+    # The tip's direction height along the hinge: t_y cos b + w_y sin b = r cos(b - top).
+    r, top = np.hypot(t_y, w_y), np.arctan2(w_y, t_y)
+    top = np.where(top < 0, top + 2 * np.pi, top)                # the highest, turning up
+    want = np.clip(-height / length, -1.0, 0.0)                  # the lowest it may point
+    reach = np.arccos(np.clip(want / np.maximum(r, 1e-12), -1.0, 1.0))
+    need = np.clip(top - reach, 0.0, None)
+    # Out of reach within LIFT_MOST (the leaf's up faces down: bending lowers the tip first):
+    # LIFT_MOST where that is still as good as the floor asks, less as it helps less, none
+    # where it does not help at all (continuous in the pose).
+    most = r * np.cos(LIFT_MOST - top)                           # the tip's height at LIFT_MOST
+    helps = np.clip((most - t_y) / np.maximum(want - t_y, 1e-12), 0.0, 1.0)
+    need = np.where(need > LIFT_MOST, LIFT_MOST * helps, need)
+    bend = np.where(t_y >= want, 0.0, need)
+    for order in (range(1, len(bend)), range(len(bend) - 2, -1, -1)):
+        step = -1 if order.step > 0 else 1
+        for i in order:
+            bend[i] = max(bend[i], bend[i + step] - rate)
+    return bend
 
 
 def _hand_lag(joints: np.ndarray, wrist: int, fps: float) -> np.ndarray:
@@ -139,17 +147,13 @@ def fill_leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob
         local[:, J[name]] = quat_to_matrix(q / np.maximum(np.linalg.norm(q, axis=-1, keepdims=True), 1e-12))
     tips = end_sites(offsets)
     scale = _body_scale(offsets)
-    for wrist in (sk.LEFT_HAND, sk.RIGHT_HAND):
-        g_el = glob[:, sk.PARENTS[wrist]]
-        g = g_el @ local[:, wrist]
-        height = joints[:, wrist, 1] - floor - HAND_THICK * scale
-        forearm = joints[:, wrist] - joints[:, sk.PARENTS[wrist]]
-        pitch = _tip_above_floor(height, g, _unit(offsets[wrist]), HAND_REACH * scale, forearm,
-                                 _HAND_HEADING_MEMORY)
-        local[:, wrist] = np.swapaxes(g_el, -1, -2) @ pitch @ g
-    for toe in _TOES:
-        g_an = glob[:, sk.PARENTS[toe]]
-        foot = joints[:, toe] - joints[:, sk.PARENTS[toe]]
-        pitch = _tip_above_floor(joints[:, toe, 1] - floor, g_an, _Z, float(np.linalg.norm(tips[toe])), foot)
-        # World pitch applied after the ankle's rotation → local: ankle^T · pitch · ankle.
-        local[:, toe] = np.swapaxes(g_an, -1, -2) @ pitch @ g_an
+    rate = LIFT_RATE / max(float(fps), 1e-6)
+    for leaf in (sk.LEFT_HAND, sk.RIGHT_HAND, *_TOES):
+        hand = leaf in (sk.LEFT_HAND, sk.RIGHT_HAND)
+        tip = _unit(offsets[leaf]) if hand else _Z
+        frame = glob[:, sk.PARENTS[leaf]] @ local[:, leaf]
+        height = joints[:, leaf, 1] - floor - (HAND_THICK * scale if hand else 0.0)
+        length = HAND_REACH * scale if hand else float(np.linalg.norm(tips[leaf]))
+        bend = _floor_bend(height, frame, tip, length, rate)
+        axis = _unit(np.cross(tip, _perp(_Y, tip)))
+        local[:, leaf] = local[:, leaf] @ axis_angle_to_matrix(bend[:, None] * axis)
