@@ -1,6 +1,6 @@
 """The catalogue file read and validated once per process.
 
-    cat = catalogue()                   # the packaged actions.toml
+    cat = catalogue()                   # the packaged actions.toml and activities.toml
     cat.get("jump").checks              # [Check(check="jump_count", count="{count}")]
     use_catalogue(path)                 # tests: another file (a temporary catalogue) from now on
 
@@ -19,15 +19,22 @@ from pydantic import ValidationError
 from interplay.catalogue.schema import Catalogue
 
 PATH = Path(__file__).with_name("actions.toml")
+# Everyday activities made by the `activity` primitive, kept apart from the verbs and gestures
+# for length; packaged with them as one catalogue.
+ACTIVITIES = Path(__file__).with_name("activities.toml")
 _current: dict[str, Catalogue] = {}
 _listeners: list[Callable[[], None]] = []
 
 
-def read(path: Path | str) -> Catalogue:
-    """A catalogue file, validated; ValueError with the entry and field when it is not one."""
+def read(path: Path | str, *more: Path | str) -> Catalogue:
+    """A catalogue file (and more files whose entries follow its own), validated; ValueError
+    with the file, entry and field when it is not one."""
     path = Path(path)
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
+        for extra in map(Path, more):
+            data.setdefault("action", []).extend(
+                tomllib.loads(extra.read_text(encoding="utf-8")).get("action", []))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path.name}: not TOML: {exc}") from None
     try:
@@ -40,7 +47,7 @@ def read(path: Path | str) -> Catalogue:
 def catalogue() -> Catalogue:
     """The catalogue in use (the packaged file unless `use_catalogue` named another)."""
     if "cat" not in _current:
-        _current["cat"] = read(PATH)
+        _current["cat"] = read(PATH, ACTIVITIES)
     return _current["cat"]
 
 

@@ -30,13 +30,42 @@ Posture = Literal["standing", "sitting", "lying", "kneeling", "squatting", "craw
 SpeedBand = Literal["slow", "walk", "jog", "run", "sprint"]
 
 
+class Moves(BaseModel):
+    """An everyday activity told part by part (CoMA's part instructions), built by the
+    `activity` primitive (`generators/primitives/activity.py`) on a captured base posture:
+    which hands move, where (`at`, a point on the body; `reach_m` ahead of it), along which
+    axis of the body and how far (`amplitude_m`, end to end), how long one stroke takes
+    (`cycle_s`), whether both hands hold one thing (`together`), the trunk's forward lean, the
+    head's pitch (down: looking at the hands) and the legs' own move."""
+    model_config = ConfigDict(extra="forbid")
+    posture: Literal["standing", "seated", "kneeling", "prone", "supine", "all_fours", "walk"] = "standing"
+    hands: Literal["right", "left", "both", "alternate", "none"] = "right"
+    at: Literal["chest", "face", "ear", "overhead", "waist", "low", "side", "lap"] = "chest"
+    axis: Literal["up", "forward", "side", "circle", "still"] = "up"
+    amplitude_m: float = Field(default=0.25, ge=0.0, le=0.8)
+    reach_m: float = Field(default=0.3, ge=0.0, le=0.7)
+    cycle_s: float = Field(default=0.8, gt=0.1, le=8.0)
+    together: bool = False
+    lean_deg: float = Field(default=0.0, ge=-20.0, le=80.0)
+    head_deg: float = Field(default=0.0, ge=-45.0, le=45.0)
+    legs: Literal["still", "march", "bounce", "hop"] = "still"
+
+
 class MadeBy(BaseModel):
     """How the studio makes it: captured families (retrieval's clips by caption), a primitive
-    (built per body part, `generators/primitives`), or a composition kind for two people."""
+    (built per body part, `generators/primitives`; `moves` for the `activity` primitive), or
+    a composition kind for two people."""
     model_config = ConfigDict(extra="forbid")
     families: list[str] = Field(default_factory=list)
     primitive: str | None = None
+    moves: Moves | None = None
     composition: str | None = None
+
+    @model_validator(mode="after")
+    def _moves_need_activity(self):
+        if (self.moves is not None) != (self.primitive == "activity"):
+            raise ValueError("made_by.moves goes with primitive = 'activity', and only with it")
+        return self
 
     @property
     def how(self) -> str:

@@ -17,7 +17,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from interplay.catalogue.load import catalogue
+from interplay.catalogue.load import catalogue, on_change
+from interplay.catalogue.schema import Action
+from interplay.generators.primitives.activity import activity
 from interplay.generators.primitives.body import axes
 from interplay.generators.primitives.contacts import hand_contacts
 from interplay.generators.primitives.exercise import arm_circles, jumping_jacks, push_ups, sit_ups
@@ -26,18 +28,18 @@ from interplay.generators.primitives.head import head
 from interplay.generators.primitives.legs import knee_lifts, lunges, squats
 from interplay.generators.primitives.postures import posture
 from interplay.generators.primitives.reach import reach_grasp_carry
-from interplay.generators.primitives.table import PRIMITIVE_TABLE
-from interplay.generators.primitives.timing import seconds_for
+from interplay.generators.primitives.table import ARMS, LEGS, PRIMITIVE_TABLE
+from interplay.generators.primitives.timing import BORDER_S, seconds_for
 from interplay.motion import skeleton as sk
 from interplay.text.encoder import Encoder
 
 BUILDERS: dict[str, Callable[..., np.ndarray]] = {
-    "hand_contacts": hand_contacts, "knee_lifts": knee_lifts, "squats": squats, "lunges": lunges,
+    "activity": activity, "hand_contacts": hand_contacts, "knee_lifts": knee_lifts, "squats": squats, "lunges": lunges,
     "push_ups": push_ups, "sit_ups": sit_ups, "jumping_jacks": jumping_jacks,
     "arm_circles": arm_circles, "reach_grasp_carry": reach_grasp_carry,
     "gait_asymmetric": gait_asymmetric, "gait_perturbed": gait_perturbed, "head": head,
 }
-SIDED = {"hand_contacts", "knee_lifts", "lunges", "arm_circles", "gait_asymmetric"}
+SIDED = {"activity", "hand_contacts", "knee_lifts", "lunges", "arm_circles", "gait_asymmetric"}
 PARTNER_AHEAD_M = 1.2      # where a partner stands for "look at the partner" when none is given
 
 
@@ -66,16 +68,57 @@ def _descriptions(name: str) -> tuple[str, ...]:
     return tuple(out)
 
 
-PRIMITIVES: dict[str, Primitive] = {
-    row["name"]: Primitive(name=row["name"], descriptions=_descriptions(row["name"]),
-                           posture=row["posture"], parts=tuple(row["parts"]),
-                           counts=bool(row["counts"]), seconds=float(row["seconds"]),
-                           builder=row["builder"], params=dict(row["params"]))
-    for row in PRIMITIVE_TABLE
-}
+def _activity(a: Action) -> Primitive:
+    """An everyday activity of the catalogue (`made_by.moves`) as a primitive of its own name:
+    counted per stroke, `cycle_s` a stroke, built on the posture its moves name."""
+    mv = a.made_by.moves
+    assert mv is not None
+    parts = (() if mv.hands == "none" else ARMS if mv.hands in ("both", "alternate")
+             else (f"{mv.hands}_arm",)) + (LEGS if mv.legs == "march" else ())
+    return Primitive(name=a.name, descriptions=tuple(a.descriptions), posture=mv.posture,
+                     parts=parts or ("head",), counts=True, seconds=mv.cycle_s,
+                     builder="activity", params=mv.model_dump(exclude={"posture", "cycle_s"}))
+
+
+def _primitives() -> dict[str, Primitive]:
+    out = {row["name"]: Primitive(name=row["name"], descriptions=_descriptions(row["name"]),
+                                  posture=row["posture"], parts=tuple(row["parts"]),
+                                  counts=bool(row["counts"]), seconds=float(row["seconds"]),
+                                  builder=row["builder"], params=dict(row["params"]))
+           for row in PRIMITIVE_TABLE}
+    for a in catalogue().action:
+        if a.made_by.primitive == "activity" and a.descriptions:
+            out[a.name] = _activity(a)
+    return out
+
+
+def activities() -> tuple[str, ...]:
+    """The names of the catalogue's everyday activities among the primitives."""
+    return tuple(n for n, p in PRIMITIVES.items() if p.builder == "activity")
+
+
+def primitive_of(entry: Action | None) -> str | None:
+    """The primitive a catalogue entry is made by (an activity: the entry's own name)."""
+    if entry is None or entry.made_by.primitive is None:
+        return None
+    return entry.name if entry.made_by.primitive == "activity" else entry.made_by.primitive
+
+
+# The table's primitives and the catalogue's activities; refilled in place (importers keep
+# the same dict) when the catalogue in use changes.
+PRIMITIVES: dict[str, Primitive] = _primitives()
 
 
 _BANKS: dict[tuple[int, tuple[str, ...]], tuple[Encoder, np.ndarray, np.ndarray]] = {}
+
+
+def _refresh() -> None:
+    PRIMITIVES.clear()
+    PRIMITIVES.update(_primitives())
+    _BANKS.clear()
+
+
+on_change(_refresh)
 
 
 def _bank(encoder: Encoder, names: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
@@ -120,8 +163,15 @@ def build(prim: Primitive, params: dict, base: np.ndarray | None = None) -> np.n
     partner (the other person's joints, for "look at the partner"), and any of the builder's
     own keyword arguments (they override the table's)."""
     p = dict(params)
-    count = int(p.pop("count", 2 if prim.counts else 1) or 1)
-    seconds = float(p.pop("seconds", 0) or prim.default_seconds(count))
+    asked = p.pop("count", None)
+    seconds = float(p.pop("seconds", 0) or 0)
+    if asked:
+        count = int(asked)
+    elif prim.builder == "activity" and seconds:    # strokes fill the segment
+        count = max(1, int(round((seconds - 2 * BORDER_S) / prim.seconds)))
+    else:
+        count = 2 if prim.counts else 1
+    seconds = seconds or prim.default_seconds(count)
     seat = p.pop("seat_m", None)
     side = p.pop("side", None)
     partner = p.pop("partner", None)          # the other person's joints (T, 22, 3), if any
