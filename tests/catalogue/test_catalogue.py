@@ -3,9 +3,7 @@ listings people read are made from it, and no other module grows its own phrase 
 
 from __future__ import annotations
 
-import ast
 import json
-from pathlib import Path
 
 import pytest
 from fastapi.testclient import TestClient
@@ -19,22 +17,6 @@ from interplay.motion.checks.named import CHECKS, run_check
 from interplay.planner.verbs import VERBS, lookup
 from interplay.settings import Settings
 from tests.helpers.api import FakeGenerator
-
-PACKAGE = Path(__file__).resolve().parents[2] / "backend" / "interplay"
-# Modules that still compile their own patterns, and how many, until their words move into the
-# catalogue (issue 23): the count may only go down, and no other module may start.
-LEGACY_COMPILES = {
-    "planner/context.py": 1,            # the context rules' table, compiled in one comprehension
-}
-GRAMMAR = "catalogue/grammar.py"
-# The benchmark's own code (prompt suite, checks) is not the product's vocabulary.
-NOT_PRODUCT = ("eval/", "motion/checks/", "data/")
-
-
-def _compiles(path: Path) -> int:
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    return sum(isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute) and n.func.attr == "compile"
-               and isinstance(n.func.value, ast.Name) and n.func.value.id == "re" for n in ast.walk(tree))
 
 
 def test_the_packaged_catalogue_validates_and_names_real_checks():
@@ -89,21 +71,6 @@ def test_the_cli_and_the_api_list_the_catalogue(tmp_path, capsys):
         assert client.get("/api/actions", params={"kind": "manner"}).json()["count"] == len(
             catalogue().of_kind("manner"))
         assert client.get("/api/actions", params={"kind": "nonsense"}).status_code == 422
-
-
-def test_no_module_grows_its_own_patterns():
-    """Regular expressions live in catalogue/grammar.py; the modules that still hold some may
-    only lose them (the vocabulary moves into the catalogue)."""
-    found = {}
-    for path in sorted(PACKAGE.rglob("*.py")):
-        rel = path.relative_to(PACKAGE).as_posix()
-        if rel == GRAMMAR or rel.startswith(NOT_PRODUCT):
-            continue
-        n = _compiles(path)
-        if n:
-            found[rel] = n
-    grown = {m: n for m, n in found.items() if n > LEGACY_COMPILES.get(m, 0)}
-    assert not grown, f"patterns outside catalogue/grammar.py: {grown} (put words in actions.toml)"
 
 
 def test_every_entrys_checks_run_on_a_capture_with_and_without_a_count():

@@ -140,7 +140,6 @@ AROUND = re.compile(r"\bturn\w*\s+(?:all\s+the\s+way\s+)?a?round\b|\babout[- ]fa
 TURN_SIDE = re.compile(r"\bturn\w*\s+(?:to\s+(?:the|his|her|their)\s+)?(left|right)\b")
 STOPS = re.compile(r"\bstands?\s+still\b|\bstops?\b(?!\s+\w+ing\s+(?:the|a|his|her)\b)|"
                    r"\bhalts?\b|\bcomes?\s+to\s+a\s+(?:stop|halt)\b")
-GOES_ON = re.compile(r"\bthen\b|\bstarts?\b|\bagain\b")
 FROM = re.compile(r"\bfrom\s+(?:a\s+|the\s+|his\s+|her\s+|their\s+)?(lying|lying\s+down|"
                   r"sitting|seated|sitting\s+down|kneeling|the\s+floor|the\s+ground|floor|ground)")
 RISES = re.compile(r"\b(?:gets?|getting|got)\s+(?:back\s+)?up\b|\bstands?\s+(?:back\s+)?up\b|"
@@ -203,16 +202,9 @@ def template_rx(templates) -> re.Pattern:
     return rx("|".join(f"(?:{template_source(t)})" for t in templates) or r"(?!x)x", re.IGNORECASE)
 
 
-BOTH_SIDES = re.compile(r"\b(?:both|arms|hands)\b")
-
-
 # --- the planner's sentence structure (planner/plan.py) ---
 WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
 CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
-# A leading subject the verb table did not split off ("a person picks up …": no known verb).
-LEADING_SUBJECT = re.compile(r"^(?:(?:a|an|the|one|two|this|that)\s+)?(?:person|man|woman|boy|girl|guy|"
-                             r"lady|kid|child|people|persons|men|women|figure|someone|somebody|he|she|"
-                             r"they|both)\s+", re.I)
 STRIKING_WHILE = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
                             re.IGNORECASE)
 # A walk or run with an end in its words (to, into, away, across, around, back).
@@ -241,15 +233,6 @@ MODIFIER_MARK = re.compile(r"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:while|wit
                    r"as\s+(?:he|she|they|if|though|the\s+person))\b)|"
                    r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
 AND_SIDE = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|right|both|other)\b)")
-RESTING = re.compile(r"^(?:in\s+(?:a\s+)?rest(?:ing)?\s+position|relaxed|at\s+(?:the|his|her|their)\s+"
-                      r"sides?|down\s+by\s+(?:the|his|her|their)\s+sides?|by\s+the\s+sides?|resting)\b")
-HANDSHAKE_WORDS = re.compile(r"\bshak\w*\s+(?:each\s+other'?s?\s+)?hands?\b")
-BODY_PART = re.compile(r"(?:(?:left|right|both|each|other|own)\s+)?(?:arms?|hands?|fists?|elbows?|"
-                   r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
-                   r"toes?|heels?|ankles?|thighs?|shins?|head|face|neck|chest|back|waist|hips?|"
-                   r"torso|body|belly|stomach|sides?|chin|ears?|eyes?|mouth|nose|hair|lap|"
-                   r"buttocks?|bottom|knuckles?|upper\s+body|lower\s+body)\b", re.I)
-STATE_MODIFIER = re.compile(r"^(?:(?:while|as)\s+)?(?:with|having|keeping|holding|still\s+holding)\b")
 
 
 # --- temporal structure (planner/temporal.py): sentences, connectives, counts, noun phrases ---
@@ -287,24 +270,9 @@ CLAUSE_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|
 
 # --- two people's sentence structure (planner/pair/roles.py, actors.py) ---
 WHO_ANSWERS = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
-IN_TURN = re.compile(r"\s*,?\s*\b(?:in\s+turns?|one\s+after\s+the\s+other|each\s+in\s+turn|"
-                      r"alternately)\b")
 TAKE_TURNS = re.compile(r"\b(?:take|takes|taking)\s+turns?\s+(?:at\s+)?(\w+ing)\b")
-IN_RETURN = re.compile(r"\s+(?:back|in\s+return|in\s+response|in\s+reply|too|as\s+well)\b")
-EACH_OTHER = re.compile(r"\b(?:each\s+other|one\s+another|together)\b")
-PLURAL_SUBJECT = re.compile(r"^(?:they|both|two\s+\w+|the\s+(?:two|pair|couple)\b)")
 COPIES_THE_OTHER = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"
                    r"\s+((?:\w+\s+)?)(?:movements?|moves|motions?|gestures?)(?P<rest>.*)$")
-PAIR_BOTH = re.compile(r"^(?:two\s+(?:people|persons|men|women|boys|girls|friends|dancers|players)|they|"
-                  r"both(?:\s+of\s+them)?|the\s+(?:two|couple|pair|dancers|players|partners|friends)"
-                  r"(?:\s+\w+)?|everyone|each\s+(?:person|of\s+them)|we|a\s+couple)$")
-PAIR_MUTUAL = re.compile(r"\b(?:each\s+other|one\s+another|together|shake\s+hands|shakes\s+hands|hug|"
-                    r"hugs|high[\s-]five|salsa|tango|waltz|partner)\b")
-PAIR_FIRST = re.compile(r"^(?:the\s+)?(?:first(?:\s+(?:person|one))?|person\s+(?:1|one|a)|leader)$")
-PAIR_SECOND = re.compile(r"^(?:the\s+)?(?:second(?:\s+(?:person|one))?|person\s+(?:2|two|b)|follower|"
-                    r"partner)$")
-PAIR_OTHER = re.compile(r"^(?:the\s+)?other(?:\s+(?:one|person))?$")
-PAIR_ONE = re.compile(r"^(?:one|one\s+(?:of\s+them|person)|someone|a\s+person)$")
 
 
 # --- paths said in words (planner/trajectory_text.py) ---
@@ -317,8 +285,6 @@ PATH_SIZE = re.compile(rf"\b(?:(?:radius|diameter)\s+(?:of\s+)?)?{_PATH_NUMBER}\
 PATH_CLOCK = re.compile(r"\b(?:turns?|turning|turned|heads?|goes|walks|runs)?\s*(left|right)?\s*"
                     r"(?:at|to|towards?|toward)\s+(\d{1,2}|one|two|three|four|five|six|seven|eight|"
                     r"nine|ten|eleven|twelve)\s*o'?\s*clock\b")
-PATH_TRAVEL_HINT = re.compile(r"\b(?:walk|run|jog|sprint|hop|skip|march|crawl|move|go|step|sneak|"
-                          r"stroll|dodge|slide|moonwalk|shuffle|limp)\w*\b")
 
 
 # --- directions of travel (planner/manner/travel.py) ---
@@ -326,10 +292,7 @@ TRAVEL_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
                    r"(?<!the\s)(?<!their\s)(?<!his\s)(?<!her\s)(?<!its\s)(?<!your\s)\bback\b"
                    r"(?!\s+(?:up|to|towards?|home|and\s+forth|into|in\b|at\b|on\b|down|where|"
                    r"from|of\b|onto|inside|over))")
-TRAVEL_SIDEWAYS = re.compile(r"\bsideways\b|\bside[\s-]?steps?\b|\bside[\s-]?stepping\b|\bstrafes?\b|"
-                       r"\bcrab[\s-]?walks?\b|\bsideward")
 TRAVEL_SIDE = re.compile(r"\b(?:to(?:wards)?\s+(?:the|their|his|her|your)\s+|to\s+)?(left|right)(?:wards?)?\b")
-TRAVEL_FORWARD = re.compile(r"\bforwards?\b|\bahead\b")
 
 
 # --- held poses (planner/manner/holds.py) ---
@@ -343,8 +306,6 @@ HOLD_CONTINUE = re.compile(
 
 
 # --- questions (planner/questions.py) ---
-QUESTION_QUESTION = re.compile(r"^\s*(?:what|what's|whats|how|which|why|when|where|who|can\s+you|could\s+you|"
-                       r"would\s+you|show\s+me|tell\s+me|do\s+you\s+know)\b", re.IGNORECASE)
 QUESTION_STEM = re.compile(r"^\s*(?:what|how)\s+(?:is|are|does|do|would|might|could|will|should)\s+"
                    r"(?:a|the|an|one)?\s*(?:person|man|woman|someone|people|player|you)?'?s?\s*"
                    r"(?:motion|reaction|movement|move|gesture)?\s*(?:when|before|after|while|to|"
@@ -352,34 +313,11 @@ QUESTION_STEM = re.compile(r"^\s*(?:what|how)\s+(?:is|are|does|do|would|might|co
 
 
 # --- durations (planner/durations.py) ---
-DURATION_UNDER_ARM = re.compile(r"\bunder (?:[\w']+ ){0,4}arms?\b|\b(?:twirl|spin)s? (?:her|him|them|the (?:follower|"
-                        r"partner|woman|man|girl|boy|lady|other(?: person)?))\b")
 DURATION_STEPS = re.compile(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
                     r"seven|eight|nine|ten)\s+(?:steps?|strides?|paces?)\b")
-
-
-
-# --- the reviewer's contact words (review/checks.py) ---
-REVIEW_CONTACT_VERBS = re.compile(r"\b(shak\w* hands?|handshake|high[- ]?fives?|hug\w*|embrac\w*|"
-                           r"push\w*|shov\w*|hold\w* hands?|clap\w* hands with|pull\w*|"
-                           r"slap\w*|touch\w*|carr(y|ies))\b", re.I)
-REVIEW_HUG_WORDS = re.compile(r"\b(hug\w*|embrac\w*|cuddl\w*)\b", re.I)
-REVIEW_COUPLE_DANCE = re.compile(r"\b(salsa|tango|waltz\w*|ballroom|couples?|partners?|leader|follower)\b|"
-                          r"\bdanc\w*\s+(together|with)\b", re.I)
 
 
 # --- two people's gestures (generators/interaction/gestures.py) ---
 GESTURE_WHO = re.compile(r"\b(?:two|the two|both|a pair of|a couple of)\s+(?:of\s+them\s+)?"
                   r"(?:people|persons|friends|men|women|kids|children|dancers|athletes)?\b|"
                   r"\bboth\s+of\s+them\b|\bthey\b|\bboth\b", re.I)
-GESTURE_TOGETHER = re.compile(r"\s*\b(?:together|at the same time|in unison|in sync\w*|"
-                       r"simultaneously|side by side|next to each other)\b", re.I)
-
-
-# --- composition (generators/interaction/generator.py) ---
-COMPOSE_IDLE = re.compile(r"(a person )?(stands?|waits?|remains?|stays?)( still| there| in place)?\.?", re.I)
-
-
-# --- a couple's spin (generators/retrieval/couple.py) ---
-COUPLE_SPIN = re.compile(r"\btwirl\w*|\b(?:spin|turn)\w* (?:her|him|them|the (?:follower|partner|woman|man|"
-                  r"girl|boy|lady|other(?: person)?))\b|\bunder (?:[\w']+ ){0,4}arms?\b")

@@ -16,6 +16,7 @@ import re
 from dataclasses import dataclass, field
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words as listed
 from interplay.planner.manner.holds import held, keep
 from interplay.planner.verbs import VERBS, Verb, doing_nouns, lookup, third
 
@@ -66,7 +67,7 @@ def parts_in(text: str) -> list[str]:
     """The parts a phrase moves: the limb after "with" ("holding the foot with both hands" →
     arms), else its first limb mention ("hands resting on the knees" → arms); a handshake
     with no side named, the right arm."""
-    if g.HANDSHAKE_WORDS.search(text) and not re.search(r"\b(left|both)\b", text):
+    if listed("handshake").search(text) and not re.search(r"\b(left|both)\b", text):
         return ["right_arm"]
     m = re.search(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + g.LIMB_PART.pattern[2:], text)
     found = _limbs(m.group(1), m.group(2)) if m else []
@@ -84,7 +85,7 @@ def plain(text: str) -> str:
     """Possessives → "the" before a body part ("his left hand" → "the left hand"), "their"
     before anything else ("his breath" → "their breath"), spaces tidied."""
     def det(m: re.Match) -> str:
-        return "the " if g.BODY_PART.match(text, m.end()) else "their "
+        return "the " if listed("body_part", ignore_case=True).starts(text, m.end()) else "their "
     text = re.sub(r"\b(?:his|her|their|its)\s+(?!own\b)", det, text)
     return re.sub(r"\s+", " ", text).strip(" ,")
 
@@ -124,7 +125,7 @@ def split_subject(text: str) -> tuple[str | None, str]:
 
 def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb | None]:
     """(parts, instruction, verb) of one simultaneous phrase ("with the right arm raised")."""
-    state = g.STATE_MODIFIER.match(mod) is not None
+    state = listed("state_modifier").starts(mod) is not None
     mod = re.sub(r"^(?:(?:while|as\s+(?:he|she|they|if|though|the\s+person)|with|having|keeping|"
                  r"still)\s+)+", "", mod).strip()
     first = mod.split(" ", 1)[0]
@@ -149,7 +150,7 @@ def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb
         return parts, plain(f"holds {obj} {rest}"), v[0]               # "holds the left arm raised"
     if v and v[1] in ("past", "participle", "gerund") and v[0].kind != "light":
         return parts, plain(f"{third(v[0].base)} {obj} {rest[len(word):]}"), v[0]
-    if g.RESTING.match(rest):
+    if listed("resting").starts(rest):
         return parts, plain(f"rests {obj} at the side"), None
     return parts, plain(f"holds {obj} {rest}"), None
 
@@ -233,14 +234,14 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
         last = main_parts
     base_bits = []
     for mod in mods:
-        state = g.STATE_MODIFIER.match(mod) is not None
+        state = listed("state_modifier").starts(mod) is not None
         for sub in g.AND_SIDE.split(mod):
-            kept = held(sub) if state or g.STATE_MODIFIER.match(sub) else {}
+            kept = held(sub) if state or listed("state_modifier").starts(sub) else {}
             if kept:                                   # a named held pose, with its detail
                 edits.update(kept)
                 last = list(kept)
                 continue
-            if state and not g.STATE_MODIFIER.match(sub):
+            if state and not listed("state_modifier").starts(sub):
                 sub = f"with {sub}"                    # "… and the left arm extended": still held
             parts, words, v = _modifier_edit(sub, last)
             if parts:

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.motion.skeleton import FPS
 from interplay.planner.schema import TrajectorySpec
 from interplay.planner.trajectory_text import path_length
@@ -100,7 +101,7 @@ def need(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat: in
          hold: bool = False) -> Need:
     """What one segment needs; `hold`: it keeps a pose (or posture) until it ends."""
     want = estimate(verb, trajectory, repeat, text, metres, sideways)
-    if g.DURATION_UNDER_ARM.search(text):
+    if words("under_arm").search(text):
         want = max(want, PARTNER_SPIN_S + 0.5)
         return Need(want, PARTNER_SPIN_S, hold)
     if verb is None:

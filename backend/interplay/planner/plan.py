@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
 from interplay.planner.decompose import POSTURE_BASE, Action, decompose, plain, split_subject
@@ -39,6 +40,13 @@ MAX_PROMPT = 500
 IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
 # Postures a step can stay in ("kneels on one knee and stays there"); part verbs hold poses.
 _POSED = {"kneel", "squat", "crouch", "sit", "lie", "stand", "pose", "balance", "lean", "bend"}
+
+
+def _without_subject(text: str) -> str:
+    """The text without a leading subject the verb table did not split off ("a person picks up
+    …": no known verb)."""
+    subject = words("leading_subject", ignore_case=True).starts(text)
+    return text[subject.end:].lstrip() if subject and text[subject.end:subject.end + 1].isspace() else text
 
 
 def _check(prompt, persons, seconds) -> None:
@@ -239,7 +247,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
         _travel(steps[-1], reasons)
     if not steps:                                   # nothing recognisable: keep the words
         action = decompose("stands still")
-        action.text = plain(g.LEADING_SUBJECT.sub("", split_subject(temporal.normalize(text))[1]))
+        action.text = plain(_without_subject(split_subject(temporal.normalize(text))[1]))
         action.base = f"a person {action.text}"
         steps = [Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)),
                       coverage=not_understood())]

@@ -16,6 +16,7 @@ import re
 from typing import Callable
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 
 # (keywords, answer, description). {side}: the side the question names (default right),
 # {other}: the opposite side.
@@ -77,7 +78,8 @@ KNOWLEDGE: tuple[tuple[str, str, str], ...] = (
 
 
 def is_question(text: str) -> bool:
-    return text.strip().endswith("?") or bool(g.QUESTION_QUESTION.match(text))
+    return text.strip().endswith("?") or bool(words("question_opening", ignore_case=True).starts(
+        text, len(text) - len(text.lstrip())))
 
 
 def _fill(answer: str, question: str) -> str:

@@ -19,6 +19,7 @@ import re
 from typing import Literal, cast
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.planner.schema import (
     MAX_COORD,
     MAX_PATH_M,
@@ -83,7 +84,7 @@ def parse(text: str) -> TrajectorySpec | None:
             return _bounded({"shape": "line", "turn_at": TurnAt(clock=hour, side=side),
                              "direction": "forward", "text": text.strip(),
                              "distance_m": distance_m})
-    travel = g.PATH_TRAVEL_HINT.search(t) is not None or re.search(r"\b(?:path|trajectory|route)\b", t)
+    travel = words("travel_words").search(t) is not None or words("path_words").search(t)
     # Shapes only count for travel: "swings the arm in circles" is not a path.
     shape = next((s for rx, s in _SHAPES if re.search(rx, t)), None) if travel else None
     dist = g.PATH_DISTANCE.search(re.sub(r"\bon\s+(?:one|the\s+\w+|a)\s+foot\b", "", t)) if travel else None

@@ -14,13 +14,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.motion import metrics as mt
 from interplay.motion import skeleton as sk
 from interplay.motion.pair.resolve import pair_bounds
 from interplay.motion.signals import runs
 
-CONTACT_VERBS = g.REVIEW_CONTACT_VERBS     # what the reviewer reads as a touch between two people
+CONTACT_VERBS = words("review_contact", ignore_case=True)     # what the reviewer reads as a touch between two people
 
 # Thresholds (a check fails above them). Retrieval/fitted motions keep bones to < 1 mm, so 1 cm
 # of mean deviation is a broken skeleton; 10 % of frames skating is several visible slides;
@@ -94,15 +94,16 @@ def com_lean(joints: np.ndarray) -> float:
 
 
 def wants_contact(text: str) -> bool:
-    return bool(g.REVIEW_CONTACT_VERBS.search(text or ""))
+    return bool(CONTACT_VERBS.search(text or ""))
 
 
 def contact_mode(text: str) -> str:
     """"hug", "hands" or "none": the contact `text` asks for (`motion.pair.resolve.CONTACTS`)."""
     text = text or ""
-    if g.REVIEW_HUG_WORDS.search(text):
+    if words("review_hug", ignore_case=True).search(text):
         return "hug"
-    return "hands" if g.REVIEW_CONTACT_VERBS.search(text) or g.REVIEW_COUPLE_DANCE.search(text) else "none"
+    couple_dance = words("review_couple_dance", ignore_case=True).search(text)
+    return "hands" if CONTACT_VERBS.search(text) or couple_dance else "none"
 
 
 def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> Checks:
@@ -141,8 +142,8 @@ def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> 
             windows += _windows(mt.pair_geometry(people[0], people[1])["overlap"],
                                 "body intersection", t)
     if len(people) == 2 and wants_contact(text) and m["contact_frames"] == 0:
-        verb = g.REVIEW_CONTACT_VERBS.search(text)       # wants_contact(text) matched it
-        failed["missing_contact"] = (f"'{verb.group(0) if verb else text}' needs a touch, "
+        verb = CONTACT_VERBS.search(text)                # wants_contact(text) matched it
+        failed["missing_contact"] = (f"'{verb.text if verb else text}' needs a touch, "
                                      "but the hands never reach the other person")
     return Checks(metrics=m, failed=failed, windows=_merge(windows))
 

@@ -23,7 +23,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
 from interplay.generators.interaction import contest, gestures, partners, touches, travel
 from interplay.generators.interaction.bodies import SHARED
@@ -54,6 +54,12 @@ START = {"help_up": "any"}     # the one helped up starts on the floor
 FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)
 
 
+def _idle(role: str) -> bool:
+    """A role that only waits: "a person stands still.", "waits there"."""
+    role = role.strip()
+    return words("compose_idle", ignore_case=True).whole(role[:-1] if role.endswith(".") else role)
+
+
 def plain(x):
     """A report made of numpy scalars and tuples as plain JSON values."""
     if isinstance(x, dict):
@@ -79,7 +85,7 @@ def _roles(plan) -> dict | None:
     out = {}
     for k in ("0", "1"):
         texts = list(dict.fromkeys(str(r[k]) for r in segs if r.get(k)))
-        busy = [t for t in texts if not g.COMPOSE_IDLE.fullmatch(t.strip())]
+        busy = [t for t in texts if not _idle(t)]
         if busy or texts:
             out[k] = "; then ".join(busy or texts[:1])
     return out or None

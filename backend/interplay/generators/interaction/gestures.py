@@ -13,6 +13,7 @@ import re
 import numpy as np
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.generators.interaction.bodies import extend, facing_pair, on_shared, refit, turn_to
 from interplay.generators.interaction.scene import Cast, clear
 from interplay.motion.checks import measures as m
@@ -28,7 +29,7 @@ TOGETHER_LAG = 2              # frames the second trails the first when both pla
 
 def solo_text(text: str) -> str:
     """One person's part of "two people jump together": "jump" (the planner's imperative)."""
-    t = g.GESTURE_TOGETHER.sub("", g.GESTURE_WHO.sub("", text, count=1))
+    t = words("gesture_together", ignore_case=True).cut(g.GESTURE_WHO.sub("", text, count=1))
     return re.sub(r"\s+", " ", t).strip(" ,.") or text
 
 

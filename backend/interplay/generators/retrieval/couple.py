@@ -22,7 +22,7 @@ import weakref
 
 import numpy as np
 
-from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.generators.retrieval.index import Candidate, RetrievalIndex
 from interplay.generators.retrieval.stitch import Stitcher
 from interplay.motion.checks import measures as m
@@ -40,7 +40,7 @@ _SPINNING: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 def asks_spin(text: str) -> bool:
     """Whether two people's words ask one of them to spin (the leader spins the follower)."""
-    return bool(g.COUPLE_SPIN.search(text.lower()))
+    return bool(words("couple_spin").search(text.lower()))
 
 
 def spin_starts(index: RetrievalIndex) -> dict[int, np.ndarray]:

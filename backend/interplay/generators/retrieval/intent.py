@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.load import catalogue
+from interplay.catalogue.words import words
 from interplay.planner.verbs import forms
 
 TRAVELS = ("backward", "left", "right", "sideways")
@@ -114,7 +115,7 @@ def turn_of(prompt: str, repeat: int = 1) -> tuple[int, str] | None:
 def still_of(prompt: str) -> bool:
     """Does the segment stop and stand ("stops walking and stands still", "halts")?"""
     t = prompt.lower()
-    return bool(g.STOPS.search(t)) and not g.GOES_ON.search(t)
+    return bool(g.STOPS.search(t)) and not words("goes_on").search(t)
 
 
 def _travel_forms() -> list[str]:

@@ -9,8 +9,9 @@ left to the base motion (and named in the reasons, so a user sees it was not lai
 
 from __future__ import annotations
 
-from interplay.catalogue.grammar import BOTH_SIDES, LEFT_RIGHT, template_rx
+from interplay.catalogue.grammar import LEFT_RIGHT, template_rx
 from interplay.catalogue.load import catalogue
+from interplay.catalogue.words import words
 from interplay.generators.retrieve_edit.arm_poses import ArmAction
 from interplay.planner.schema import Segment
 
@@ -80,7 +81,7 @@ def arm_actions(seg: Segment, offset: int = 0) -> tuple[list[ArmAction], list[st
             actions = {s: both for s in SIDES}
         elif pose in ("wave", "arm_up"):
             named = side_of(text)
-            if pose == "arm_up" and named is None and BOTH_SIDES.search(text):
+            if pose == "arm_up" and named is None and words("both_sides").search(text):
                 actions = {s: pose for s in SIDES}
             else:
                 actions = {named or "right": pose}

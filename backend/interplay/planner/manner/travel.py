@@ -16,6 +16,7 @@ forward and moves backwards; `untangle` drops a straight path that only restates
 from __future__ import annotations
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.planner.schema import TrajectorySpec, Travel
 from interplay.planner.verbs import Verb
 
@@ -35,11 +36,11 @@ def direction(text: str, verb: Verb | None) -> Travel | None:
     if g.TRAVEL_BACK.search(t):
         return "backward"
     side = g.TRAVEL_SIDE.search(t)
-    if side and (g.TRAVEL_SIDEWAYS.search(t) or verb.base in LATERAL):
+    if side and (words("sideways").search(t) or verb.base in LATERAL):
         return "left" if side.group(1) == "left" else "right"
-    if g.TRAVEL_SIDEWAYS.search(t):
+    if words("sideways").search(t):
         return "left"            # "steps sideways", side unsaid: one side, said in `reasons`
-    if g.TRAVEL_FORWARD.search(t):
+    if words("forward").search(t):
         return "forward"
     return None
 

@@ -14,14 +14,11 @@ from __future__ import annotations
 
 import re
 
-from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 
-BOTH = g.PAIR_BOTH
-MUTUAL = g.PAIR_MUTUAL
-FIRST = g.PAIR_FIRST
-SECOND = g.PAIR_SECOND
-OTHER = g.PAIR_OTHER
-ONE = g.PAIR_ONE
+# the subjects (each read as the whole subject) and, anywhere in a clause, what both do
+BOTH, FIRST, SECOND = words("pair_both"), words("pair_first"), words("pair_second")
+OTHER, ONE, MUTUAL = words("pair_other"), words("pair_one"), words("pair_mutual")
 
 
 def actors(subject: str | None, persons: int, prev: list[int] | None, names: dict,
@@ -31,7 +28,7 @@ def actors(subject: str | None, persons: int, prev: list[int] | None, names: dic
     if persons == 1:
         return [0]
     s = re.sub(r"\s+", " ", (subject or "").strip())
-    if MUTUAL.search(text) or BOTH.match(s):
+    if MUTUAL.search(text) or BOTH.whole(s):
         return [0, 1]
     if not s:
         return prev or [0, 1]
@@ -39,13 +36,13 @@ def actors(subject: str | None, persons: int, prev: list[int] | None, names: dic
     if pair:
         names.update({pair.group(1): 0, pair.group(2): 1})
         return [0, 1]
-    if FIRST.match(s):
+    if FIRST.whole(s):
         return [0]
-    if SECOND.match(s):
+    if SECOND.whole(s):
         return [1]
-    if OTHER.match(s):
+    if OTHER.whole(s):
         return [1 - prev[0]] if prev and len(prev) == 1 else [0]
-    if ONE.match(s):
+    if ONE.whole(s):
         return [1]
     return [person(s, names)]
 

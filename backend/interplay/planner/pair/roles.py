@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import words
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose
 from interplay.planner.manner.travel import direction
 from interplay.planner.pair.actors import FIRST, ONE, SECOND, person
@@ -89,7 +90,7 @@ def _partner_words(text: str) -> str:
 
 def _answer(text: str) -> tuple[str, bool]:
     """(the answer's words, whether it is said to answer: "waves back" → ("waves", True))."""
-    t = g.IN_RETURN.sub("", text)
+    t = words("in_return").cut(text, "+")
     return t.strip(" ,"), t != text
 
 
@@ -100,9 +101,9 @@ def _verb(text: str) -> str | None:
 
 def _who(subject: str, names: dict) -> int:
     s = re.sub(r"\s+", " ", subject)
-    if SECOND.match(s) or re.match(r"^the\s+follower", s):
+    if SECOND.whole(s) or re.match(r"^the\s+follower", s):
         return 1
-    if FIRST.match(s) or ONE.match(s) or s in ("he", "she"):
+    if FIRST.whole(s) or ONE.whole(s) or s in ("he", "she"):
         return 0
     return person(s, names)
 
@@ -110,16 +111,16 @@ def _who(subject: str, names: dict) -> int:
 def exchange(text: str, names: dict) -> Exchange | None:
     """The exchange a clause describes (see the module docstring), or None."""
     t = g.TAKE_TURNS.sub(lambda m: f"{m.group(1)} in turn", text)
-    if g.IN_TURN.search(t) and g.PLURAL_SUBJECT.match(t):
+    if words("in_turn").search(t) and words("plural_subject").starts(t):
         rest = re.sub(r"^(?:they|both(?:\s+of\s+them)?|two\s+\w+|the\s+(?:two|pair|couple)"
-                      r"(?:\s+\w+)?)\s+", "", g.IN_TURN.sub("", t))
+                      r"(?:\s+\w+)?)\s+", "", words("in_turn").cut(t, ","))
         hit = lookup(rest.split(" ", 1)[0])
         if hit is None:
             return None
         rest = third(hit[0].base) + rest[len(rest.split(" ", 1)[0]):]      # "bow" → "bows"
         return Exchange(0, {0: rest, 1: rest}, "after", f"roles: '{text}' → one after the other")
     m = _SUBJECT.match(t)
-    if m is None or g.EACH_OTHER.search(t) or not (lookup(m.group("rest").split(" ", 1)[0])
+    if m is None or words("each_other").search(t) or not (lookup(m.group("rest").split(" ", 1)[0])
                                                 or g.COPIES_THE_OTHER.match(m.group("rest"))):
         return None                  # both do it ("… wave at each other"), or no verb follows
     subject, rest = m.group("subj"), m.group("rest")

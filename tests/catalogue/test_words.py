@@ -1,0 +1,45 @@
+"""words.toml validates, every list is read somewhere, and its phrases are found as whole words."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from interplay.catalogue.words import Phrases, WordLists, lists, parse, words
+
+PACKAGE = Path(__file__).resolve().parents[2] / "backend" / "interplay"
+
+
+def test_every_list_is_read_by_the_code():
+    code = "\n".join(p.read_text(encoding="utf-8") for p in PACKAGE.rglob("*.py"))
+    unread = [name for name in lists() if f'"{name}"' not in code]
+    assert not unread, f"lists no module reads: {unread}"
+
+
+def test_a_bad_phrase_or_list_is_refused():
+    with pytest.raises(ValueError, match="not closed"):
+        parse("shak* (hand|hands")
+    with pytest.raises(ValueError, match="bracket inside a word"):
+        parse("high-(five|fives)")
+    with pytest.raises(ValueError):
+        WordLists.model_validate({"lists": {"empty": []}})
+
+
+def test_phrases_are_whole_words_with_endings_options_and_gaps():
+    p = Phrases(["shak* [each other|each other's] (hand|hands)", "high-five", "under ~2 (arm|arms)"])
+    assert p.search("they shake hands").text == "shake hands"
+    assert p.search("shaking each other's hands").text == "shaking each other's hands"
+    assert p.search("a high five") and p.search("a high-five") and not p.search("a highfive")
+    assert p.search("under her partner's arm") and not p.search("under the left raised arm")
+    assert not p.search("handshakes hands") and not p.search("shake handsome")
+    assert Phrases(["hug*"]).search("HUGS") is None and Phrases(["hug*"], ignore_case=True).search("HUGS")
+
+
+def test_whole_starts_and_cut():
+    assert words("pair_both").whole("the two friends") and not words("pair_both").whole("the two friends wave")
+    assert words("pair_second").whole("person 2") and words("pair_first").whole("the first one")
+    assert words("plural_subject").starts("they're waving") and not words("plural_subject").starts("and they")
+    assert words("in_turn").cut("they bow, one after the other", ",") == "they bow"
+    assert words("in_return").cut("waves back", "+") == "waves" and words("in_return").cut("back off", "+") == "back off"
+    assert words("gesture_together", ignore_case=True).cut("jump together and clap in unison") == "jump and clap"
