@@ -43,3 +43,15 @@ def test_whole_starts_and_cut():
     assert words("in_turn").cut("they bow, one after the other", ",") == "they bow"
     assert words("in_return").cut("waves back", "+") == "waves" and words("in_return").cut("back off", "+") == "back off"
     assert words("gesture_together", ignore_case=True).cut("jump together and clap in unison") == "jump and clap"
+
+
+def test_intents_patterns_are_built_once_per_catalogue_in_use():
+    from interplay.catalogue.load import use_catalogue
+    from interplay.generators.retrieval import intent
+    intent.speed_of("a person sprints")
+    built = dict(intent._PATTERNS)
+    assert built
+    intent.speed_of("a person sprints")
+    assert intent._PATTERNS == built                       # the same patterns, not built again
+    use_catalogue(None)                                     # another catalogue: built anew
+    assert not intent._PATTERNS

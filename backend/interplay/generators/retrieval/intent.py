@@ -19,7 +19,7 @@ import re
 from dataclasses import dataclass
 
 from interplay.catalogue import grammar as g
-from interplay.catalogue.load import catalogue
+from interplay.catalogue.load import catalogue, on_change
 from interplay.catalogue.words import words
 from interplay.planner.verbs import forms
 
@@ -62,10 +62,19 @@ def _forms_of(a) -> tuple[str, ...]:
     return ()
 
 
+# patterns by the names of the entries they find, built once per catalogue in use
+_PATTERNS: dict[tuple[str, ...], re.Pattern] = {}
+on_change(_PATTERNS.clear)
+
+
 def _words(entries) -> re.Pattern:
     """One pattern for the word forms of catalogue entries (each with its own exceptions)."""
-    return g.rx("|".join(f"(?:{g.words_source(_forms_of(a), tuple(a.not_before))})"
-                         for a in entries if _forms_of(a)) or r"(?!x)x", re.IGNORECASE)
+    entries = list(entries)
+    key = tuple(a.name for a in entries)
+    if key not in _PATTERNS:
+        _PATTERNS[key] = g.rx("|".join(f"(?:{g.words_source(_forms_of(a), tuple(a.not_before))})"
+                                       for a in entries if _forms_of(a)) or r"(?!x)x", re.IGNORECASE)
+    return _PATTERNS[key]
 
 
 def _entry(name: str) -> re.Pattern:
