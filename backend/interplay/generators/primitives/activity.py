@@ -25,6 +25,7 @@ from interplay.motion.checks.measures import hand_point
 
 J = sk.JOINT_INDEX
 SIDES = {"left": 1.0, "right": -1.0}      # sign along the body's left axis
+MAX_BEND_DEG = 35.0                       # the deepest trunk bend to a low target (a broom, a spade)
 BOW_M = 0.25                              # how far forward the hand's way in and out bows
 BOUNCE_M = 0.04                           # a bounce's dip (legs "bounce"), the feet kept down
 HOP_M = 0.12                              # a hop's height (legs "hop")
@@ -47,7 +48,7 @@ def _anchor(j: np.ndarray, at: str, side: str, reach_m: float, together: bool) -
     if at == "lap":                        # seated: over the thighs
         return pel + 0.15 * up + (reach_m + 0.1) * fwd + s * left
     if at == "low":                        # thigh-high ahead: the trunk bends to it
-        return pel - 0.30 * up + reach_m * fwd + s * left
+        return pel - 0.20 * up + reach_m * fwd + s * left
     if at == "side":
         return j[:, J[f"{side}_shoulder"]] + SIDES[side] * 0.45 * left - 0.10 * up + 0.10 * fwd
     return chest + reach_m * fwd + s * left   # chest
@@ -123,10 +124,12 @@ def activity(base: np.ndarray, count: int, hands: str = "right", at: str = "ches
 
 def _bend_to(j: np.ndarray, side: str, point: np.ndarray, env: np.ndarray) -> np.ndarray:
     """The trunk bent forward, by one angle over the strokes (eased in and out by `env`), far
-    enough for the `side` arm to reach `point`: a bend searched per frame would jump between
-    its steps as the stroke moves the hand."""
+    enough for the `side` arm to reach `point` (at most MAX_BEND_DEG: a tool's handle makes up
+    the rest): a bend searched per frame would jump between its steps as the stroke moves the
+    hand."""
     _, ang = lean_to_reach(j, side, point, np.ones(len(j)))
     bend = float(np.percentile(ang[env >= 1.0], 90)) if (env >= 1.0).any() else 0.0
+    bend = min(bend, np.radians(MAX_BEND_DEG))
     left = axes(j)[0]
     return turn(j, upper_body(), j[:, sk.PELVIS], left, bend * env)
 
