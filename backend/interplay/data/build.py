@@ -307,6 +307,12 @@ def main(argv: list[str] | None = None) -> int:
     save_clips(clips, args.out)
     write_card(clips, args.out, skipped=SKIPPED, composed_notes=COMPOSE_NOTES)
     print(f"wrote {len(clips)} clips to {args.out}")
+    # The captures' own head and hand orientations beside the sources just written
+    # (`data/leaves.py`; their frames must match the new clips').
+    from interplay.data.leaves import CARRIED, build_leaves
+    for source in (s for s in CARRIED if s in {c.source for c in clips}):
+        summary = build_leaves(source, args.source, args.out)
+        print(f"leaves       {source}: {summary['people']} people, {summary['frames']} frames")
     return 0
 
 

@@ -1,0 +1,120 @@
+"""Issue 27: the captures' own head and hand orientations beside the library
+(`data/leaves.py` writes models/data/leaves/<source>.npz; `motion/captured_leaves.py` reads
+them): built from the raw fixtures, carried for every Daz-named CMU person in the shipped
+library, lined up with the library's own bones, and given back exactly by the rig and its
+exports."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from interplay.data import build
+from interplay.data.leaves import agreement
+from interplay.motion import skeleton as sk
+from interplay.motion.captured_leaves import LEAF_NAMES, captured_local, captured_world
+from interplay.motion.clip import default_clips, load_clips
+from interplay.motion.kinematics import floor_height
+from interplay.motion.rig import global_rotations, rig_positions, solve_rig
+from interplay.motion.rotations import quat_to_matrix
+
+RAW = Path(__file__).resolve().parents[1] / "fixtures" / "raw"
+J = sk.JOINT_INDEX
+
+
+def lines_up(median_deg: dict[str, float]) -> bool:
+    """Hands within 25° (median) of their forearms, the head within 45° of neck → head (a
+    head pitches on its neck: walking on uneven terrain, 03_01 looks down, 39°)."""
+    return median_deg["head"] < 45.0 and max(median_deg["left_wrist"], median_deg["right_wrist"]) < 25.0
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    out = tmp_path_factory.mktemp("data")
+    build.SKIPPED.clear()
+    assert build.main(["--source", str(RAW), "--out", str(out), "--only", "cmu-bvh", "cmu-salsa"]) == 0
+    return out, load_clips(out)
+
+
+def test_the_build_writes_side_files_that_fit_its_clips(built):
+    out, clips = built
+    assert (out / "leaves" / "cmu-bvh.npz").exists() and (out / "leaves" / "cmu-salsa.npz").exists()
+    # The positions' own files are the sources' alone (the side files sit in a folder).
+    assert {p.stem for p in out.glob("*.npz")} == {"cmu-bvh", "cmu-salsa"}
+    carried = 0
+    for clip in clips:
+        for k, joints in enumerate(clip.people):
+            world = captured_world(clip.id, k, len(joints), data_dir=out)
+            daz = clip.meta.get("skeleton") == "cmu-daz"
+            assert bool(world) == daz, clip.id
+            if world:
+                carried += 1
+                q = np.stack([world[leaf] for leaf in LEAF_NAMES], axis=1)
+                assert lines_up(agreement(np.asarray(joints, np.float64), q)), clip.id
+    assert carried >= 2
+    # A library built otherwise (other frames) gets no leaves rather than misplaced ones.
+    clip = next(c for c in clips if captured_world(c.id, 0, data_dir=out))
+    assert captured_world(clip.id, 0, clip.frames + 1, data_dir=out) == {}
+
+
+def test_the_library_carries_every_daz_person():
+    """The shipped side files: every cmu-bvh person of the Daz family and both salsa dancers
+    (82 people, 22,376 frames), frame for frame, lined up with the library's forearms and
+    neck → head bones (medians: hands 9–11°, at most 22°; heads 11°, at most 39°; a yaw
+    wrong by 90° puts the hands 60–70° off)."""
+    want = carried = 0
+    for clip in default_clips():
+        if clip.source not in ("cmu-bvh", "cmu-salsa"):
+            continue
+        for k, joints in enumerate(clip.people):
+            want += clip.meta.get("skeleton") == "cmu-daz"
+            world = captured_world(clip.id, k, len(joints))
+            if world:
+                carried += 1
+                q = np.stack([world[leaf] for leaf in LEAF_NAMES], axis=1)
+                assert lines_up(agreement(np.asarray(joints, np.float64), q)), clip.id
+    assert carried == want >= 80
+
+
+def _salsa():
+    clip = next(c for c in default_clips() if c.id == "salsa:01")
+    people = [np.asarray(p, np.float64) for p in clip.people]
+    return clip, people, floor_height(people)
+
+
+def test_the_rig_turns_head_and_hands_as_the_capture_did():
+    clip, people, floor = _salsa()
+    joints = people[0]
+    world = captured_world(clip.id, 0, len(joints))
+    rig = solve_rig(joints, floor=floor, leaves=captured_local(joints, world, floor=floor))
+    glob = global_rotations(rig)
+    plain = solve_rig(joints, floor=floor)
+    # Leaves move no joint: the positions are the rig's own either way.
+    np.testing.assert_allclose(rig_positions(rig), rig_positions(plain), atol=1e-9)
+    # The head exactly (float16 storage aside); a hand exactly while it is off the floor.
+    np.testing.assert_allclose(glob[:, J["head"]], quat_to_matrix(world["head"]), atol=1e-9)
+    high = joints[:, J["right_wrist"], 1] - floor > 0.5
+    assert high.sum() > 100
+    np.testing.assert_allclose(glob[high, J["right_wrist"]], quat_to_matrix(world["right_wrist"][high]),
+                               atol=1e-9)
+    # Not what the rig derives on its own.
+    derived = global_rotations(plain)[:, J["head"]]
+    rel = np.einsum("tji,tjk->tik", derived, glob[:, J["head"]])
+    turn = np.degrees(np.arccos(np.clip((np.trace(rel, axis1=1, axis2=2) - 1) / 2, -1, 1)))
+    assert np.median(turn) > 5.0
+
+
+def test_the_bvh_carries_the_captured_head():
+    from interplay.motion.formats.bvh import read_bvh, write_bvh
+    clip, people, floor = _salsa()
+    joints = people[1][:200]
+    world = {k: v[:200] for k, v in captured_world(clip.id, 1, len(people[1])).items()}
+    local = captured_local(joints, world, floor=floor)
+    given = read_bvh(write_bvh(joints, floor=floor, leaves=local))
+    plain = read_bvh(write_bvh(joints, floor=floor))
+    cols = given._channel_columns[given.index("head")]
+    diff = np.abs(given.motion[:, cols] - plain.motion[:, cols]).max(axis=1)
+    assert np.median(diff) > 2.0                                 # degrees
+    # The joints the file rebuilds are the motion's either way.
+    np.testing.assert_allclose(given.positions()[:, [given.index("head")]],
+                               plain.positions()[:, [plain.index("head")]], atol=1e-3)
