@@ -38,9 +38,9 @@ class Moves(BaseModel):
     (`cycle_s`), whether both hands hold one thing (`together`), the trunk's forward lean, the
     head's pitch (down: looking at the hands) and the legs' own move."""
     model_config = ConfigDict(extra="forbid")
-    posture: Literal["standing", "seated", "kneeling", "prone", "supine", "all_fours", "walk"] = "standing"
+    posture: Literal["standing", "seated", "floor", "kneeling", "prone", "supine", "all_fours", "walk"] = "standing"
     hands: Literal["right", "left", "both", "alternate", "none"] = "right"
-    at: Literal["chest", "face", "ear", "overhead", "waist", "low", "side", "lap"] = "chest"
+    at: Literal["chest", "face", "ear", "overhead", "waist", "low", "side", "hang", "lap"] = "chest"
     axis: Literal["up", "forward", "side", "circle", "still"] = "up"
     amplitude_m: float = Field(default=0.25, ge=0.0, le=0.8)
     reach_m: float = Field(default=0.3, ge=0.0, le=0.7)

@@ -49,6 +49,8 @@ def _anchor(j: np.ndarray, at: str, side: str, reach_m: float, together: bool) -
         return pel + 0.15 * up + (reach_m + 0.1) * fwd + s * left
     if at == "low":                        # thigh-high ahead: the trunk bends to it
         return pel - 0.20 * up + reach_m * fwd + s * left
+    if at == "hang":                       # hanging by the hips (bags, a suitcase)
+        return pel - 0.05 * up + 0.05 * fwd + SIDES[side] * 0.28 * left
     if at == "side":
         return j[:, J[f"{side}_shoulder"]] + SIDES[side] * 0.45 * left - 0.10 * up + 0.10 * fwd
     return chest + reach_m * fwd + s * left   # chest

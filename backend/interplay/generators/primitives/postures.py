@@ -30,7 +30,7 @@ from interplay.motion.kinematics import canonicalize
 from interplay.motion.signals import smooth
 
 J = sk.JOINT_INDEX
-NAMES = ("standing", "seated", "kneeling", "prone", "supine", "all_fours", "walk")
+NAMES = ("standing", "seated", "floor", "kneeling", "prone", "supine", "all_fours", "walk")
 SEAT_M = 0.45           # a chair's seat height
 SWAY_SMOOTH_S = 0.6     # the stand's low pass
 STAND_WINDOW_S = 1.5
@@ -117,6 +117,16 @@ def _kneel_score(c: Clip) -> np.ndarray:
     return np.where(ok, -b.tilt, -np.inf)
 
 
+def _floor_score(c: Clip) -> np.ndarray:
+    """Sitting on the floor: the benchmark's sitting (pelvis under half its standing height,
+    torso within 50° of upright), upright, hands low (not caught mid-fall)."""
+    j = c.people[0].astype(np.float64)
+    b = m.frame_of(j)
+    hands = np.maximum(j[:, sk.LEFT_HAND, 1], j[:, sk.RIGHT_HAND, 1]) < j[:, J["spine3"], 1]
+    ok = m.sitting(b) & (b.tilt < 25) & hands & (b.height[:, sk.PELVIS] < 0.35)
+    return np.where(ok, -b.tilt, -np.inf)
+
+
 @lru_cache(maxsize=8)
 def found(name: str) -> tuple[np.ndarray, Found]:
     """(captured frames (K, 22, 3) canonicalised, where they came from) for one posture."""
@@ -131,7 +141,7 @@ def found(name: str) -> tuple[np.ndarray, Found]:
         c = max(walks, key=lambda c: c.frames)
         return _canon(c.people[0]), Found(name, c.id, (0, c.frames), c.licence)
     score = {"prone": _lying(-1.0), "supine": _lying(1.0), "all_fours": _fours_score,
-             "kneeling": _kneel_score}.get(name)
+             "kneeling": _kneel_score, "floor": _floor_score}.get(name)
     if score is None:
         raise ValueError(f"unknown posture {name!r}; expected one of {', '.join(NAMES)}")
     c, k, _ = _best(clips, score)
