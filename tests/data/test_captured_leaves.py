@@ -118,3 +118,60 @@ def test_the_bvh_carries_the_captured_head():
     # The joints the file rebuilds are the motion's either way.
     np.testing.assert_allclose(given.positions()[:, [given.index("head")]],
                                plain.positions()[:, [plain.index("head")]], atol=1e-3)
+
+
+def test_a_retrieved_salsa_exports_the_dancers_own_heads_and_hands():
+    """The stored retrieval motion of a salsa (one captured piece: salsa:09 frames 263–323,
+    both dancers): its exports' leaves are the capture's, frame for frame, and the BVH's head
+    channel is the capture's, not the derived one."""
+    import json
+
+    from interplay.motion.captured_leaves import _source_local, export_leaves, plan_leaves
+    from interplay.motion.formats.bvh import read_bvh, write_bvh
+    from tests.helpers.gltf_files import FIXTURES, fixture_people
+    plan = json.loads((FIXTURES / "retrieval_salsa.json").read_text())["plan"]
+    people = fixture_people("retrieval_salsa")
+    leaves = plan_leaves(plan, 2, len(people[0]))
+    for k in range(2):
+        source = _source_local("salsa:09", k)
+        for leaf in LEAF_NAMES:
+            np.testing.assert_array_equal(leaves[k][leaf], source[leaf][263:323])
+    assert export_leaves(plan, 2, len(people[0]))[1].keys() == set(LEAF_NAMES)
+    floor = floor_height(people)
+    given = read_bvh(write_bvh(people[1], floor=floor, leaves=leaves[1]))
+    plain = read_bvh(write_bvh(people[1], floor=floor))
+    cols = given._channel_columns[given.index("head")]
+    assert np.median(np.abs(given.motion[:, cols] - plain.motion[:, cols]).max(axis=1)) > 2.0
+    # Another generator's plan, or a plan that does not fit the motion, carries none.
+    assert plan_leaves({**plan, "generator": "spam"}, 2, 60) == [{}, {}]
+    assert plan_leaves(plan, 2, 59) == [{}, {}]
+
+
+def test_views_and_joins():
+    """A mirrored view swaps the hands and reflects them, a reversed one runs backwards; the
+    frames at a join between two pieces are left to the rig, which turns its derived leaves
+    into the captured ones over LEAF_BLEND frames: each step there smaller than the jump from
+    one capture's head to the other's."""
+    from interplay.motion.captured_leaves import SEAM, _source_local, _view_local, plan_leaves
+    from interplay.motion.rig.leaves import LEAF_BLEND
+    from interplay.motion.rig.steps import quat_steps
+    base = _source_local("cmu:02_01", 0)
+    mirrored = _view_local("cmu:02_01#mirrored#reversed", 0)
+    np.testing.assert_allclose(mirrored["left_wrist"][::-1] * [1, 1, -1, -1], base["right_wrist"])
+    plan = {"generator": "retrieval", "segments": [{"start": 0, "end": 50, "retrieval": {
+        "mode": "single", "synthetic": False, "tracks": [[
+            {"clip": "cmu:02_01", "people": [0], "start": 0, "end": 25, "score": 1.0},
+            {"clip": "cmu:02_02", "people": [0], "start": 10, "end": 35, "score": 1.0}]]}}]}
+    leaves = plan_leaves(plan, 1, 50)[0]
+    gap = np.flatnonzero(np.isnan(leaves["head"][:, 0]))
+    assert list(gap) == list(range(25 - SEAM, 25 + SEAM))
+    # The rig on joints of the first capture (the joins' rotations are what is tested).
+    joints = np.asarray(next(c for c in default_clips() if c.id == "cmu:02_01").people[0][:50], np.float64)
+    rig = solve_rig(joints, leaves=leaves)
+    head = rig.rotations[:, J["head"]]
+    np.testing.assert_allclose(np.abs(np.sum(head[:25 - SEAM] * leaves["head"][:25 - SEAM], -1)), 1.0, atol=1e-9)
+    jump = quat_steps(leaves["head"][[25 - SEAM - 1, 25 + SEAM]])[0]     # the captures' own jump
+    steps = quat_steps(head)
+    assert steps[25 - SEAM - 1:25 + SEAM].max() < jump               # spread over the join
+    assert LEAF_BLEND >= SEAM
+

@@ -23,6 +23,14 @@ def cmd_metrics(args) -> int:
     return 0
 
 
+def _leaves(motion) -> list[dict]:
+    """Per person, the leaves to export: the motion's own (an edit's) over the captures' own
+    where its plan is a retrieval's (`motion/captured_leaves.export_leaves`)."""
+    from interplay.motion.captured_leaves import plan_leaves
+    captured = plan_leaves(motion.plan, len(motion.people), motion.frames)
+    return [{**c, **motion.leaves_of(k)} for k, c in enumerate(captured)]
+
+
 def cmd_export(args) -> int:
     motion = read_motion(args.motion)
     given = [f"--{k}" for k in ("fps", "units", "up", "names") if getattr(args, k) is not None]
@@ -36,7 +44,7 @@ def cmd_export(args) -> int:
                                         mesh=not args.no_mesh, name=motion.prompt or "motion",
                                         out_fps=args.fps or motion.fps, units=args.units or "m",
                                         names=args.names or "smpl",
-                                        leaves=[motion.leaves_of(k) for k in range(len(motion.people))]))
+                                        leaves=_leaves(motion)))
         print(f"wrote {args.out}", file=sys.stderr)
         return 0
     if args.format == "json":
@@ -51,7 +59,7 @@ def cmd_export(args) -> int:
         people = [p.astype("float64") for p in motion.people]
         text = write_bvh(people[args.person], fps=motion.fps, out_fps=args.fps or motion.fps,
                          units=args.units or "m", up=args.up or "y", names=args.names or "smpl",
-                         floor=floor_height(people), leaves=motion.leaves_of(args.person))
+                         floor=floor_height(people), leaves=_leaves(motion)[args.person])
     write_text(args.out, text)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0

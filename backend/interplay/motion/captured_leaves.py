@@ -72,3 +72,87 @@ def captured_local(joints: np.ndarray, world: dict[str, np.ndarray], *, fps: flo
         local = np.swapaxes(parent, -1, -2) @ quat_to_matrix(np.asarray(q, np.float64))
         out[leaf] = continuous(matrix_to_quat(local)[:, None])[:, 0]
     return out
+
+
+# Frames at each join of two captured pieces (and at a hold) left to the derived rotations,
+# which `rig.solve_rig` blends into the captured ones over LEAF_BLEND frames: the stitcher
+# blends the joints across a join, the captures' own hands and heads would jump there.
+SEAM = 2
+_MIRROR_SWAP = {"head": "head", "left_wrist": "right_wrist", "right_wrist": "left_wrist"}
+
+
+@lru_cache(maxsize=64)
+def _source_local(clip_id: str, person: int, data_dir: str = str(DATA_DIR)) -> dict[str, np.ndarray]:
+    """A library clip person's captured leaves as the rig's local rotations on its own joints."""
+    from interplay.motion.clip import default_clips
+    from interplay.motion.kinematics import floor_height
+    clip = next((c for c in default_clips(data_dir) if c.id == clip_id), None)
+    if clip is None or person >= len(clip.people):
+        return {}
+    people = [np.asarray(p, np.float64) for p in clip.people]
+    world = captured_world(clip_id, person, len(people[person]), data_dir)
+    return captured_local(people[person], world, floor=floor_height(people)) if world else {}
+
+
+def _view_local(view: str, person: int) -> dict[str, np.ndarray]:
+    """The local leaves of a retrieval view of a clip ("<id>", "<id>#mirrored", "#reversed",
+    both; `generators/retrieval/views.py`): mirrored left ↔ right (a reflection x → -x turns
+    a rotation's quaternion (w, x, y, z) into (w, x, -y, -z)), reversed in time."""
+    base, *marks = view.split("#")
+    local = _source_local(base, person)
+    if "mirrored" in marks:
+        flip = np.array([1.0, 1.0, -1.0, -1.0])
+        local = {_MIRROR_SWAP[k]: v * flip for k, v in local.items()}
+    if "reversed" in marks:
+        local = {k: v[::-1] for k, v in local.items()}
+    return local
+
+
+def plan_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
+    """Per person, the captured leaves of a retrieval motion's frames, (frames, 4) with NaN
+    rows where it has none (another source, a hold, SEAM frames at a join): read from the
+    plan's segments' captured pieces (`generators/plan.CapturePiece`: clip or view, people,
+    frames [start, end), laid end to end over the segment). Only for the retrieval
+    generator's plans, whose frames are the pieces' (turned and placed, which leaves the local
+    rotations as they are); [{}…] for any other plan or one that does not fit."""
+    empty: list[dict[str, np.ndarray]] = [{} for _ in range(persons)]
+    if not isinstance(plan, dict) or plan.get("generator") != "retrieval":
+        return empty
+    out = [{leaf: np.full((frames, 4), np.nan) for leaf in LEAF_NAMES} for _ in range(persons)]
+    found = False
+    try:
+        for seg in plan.get("segments") or []:
+            choice = seg.get("retrieval")
+            if not choice:
+                continue
+            tracks = choice["tracks"]
+            for t, track in enumerate(tracks):
+                at = int(seg["start"])
+                for piece in track:
+                    s, e = int(piece["start"]), int(piece["end"])
+                    for i, source_person in enumerate(piece["people"]):
+                        person = i if choice["mode"] == "pair" else t
+                        local = _view_local(piece["clip"], int(source_person))
+                        if person >= persons or at + e - s > frames:
+                            return empty
+                        for leaf, q in local.items():
+                            if e > len(q):
+                                return empty
+                            lo, hi = at + (SEAM if at > 0 else 0), at + e - s - (SEAM if at + e - s < frames else 0)
+                            if hi > lo:
+                                out[person][leaf][lo:hi] = q[s + lo - at:s + hi - at]
+                                found = True
+                    at += e - s
+    except (KeyError, TypeError, ValueError):
+        return empty
+    if not found:
+        return empty
+    return [{k: v for k, v in person.items() if np.isfinite(v).any()} for person in out]
+
+
+def export_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
+    """The leaves the exports give the rig: an edit's (plan["leaves"], `motion.leaves_in`)
+    over the captures' own (`plan_leaves`), leaf by leaf."""
+    from interplay.motion.motion import leaves_in
+    edited = leaves_in(plan, persons, frames)
+    return [{**c, **e} for c, e in zip(plan_leaves(plan, persons, frames), edited)]

@@ -81,11 +81,11 @@ def export_motion(motion_id: str, repo: RepoDep,
                   ) -> Response:
     motion = _load(repo, motion_id)
     if format == "glb":
+        from interplay.motion.captured_leaves import export_leaves
         from interplay.motion.formats.gltf import MEDIA_TYPE, write_glb
-        from interplay.motion.motion import leaves_in
         data = write_glb([p.astype("float64") for p in motion.people], fps=motion.fps, mesh=mesh,
                          name=motion.prompt or "motion", out_fps=int(fps), units=units, names=names,
-                         leaves=leaves_in(motion.plan, motion.persons, motion.frames))
+                         leaves=export_leaves(motion.plan, motion.persons, motion.frames))
         name = export_name(motion.id, motion.prompt, "glb", "" if mesh else "-skeleton")
         return Response(data, media_type=MEDIA_TYPE,
                         headers={"Content-Disposition": content_disposition(name)})
@@ -100,10 +100,10 @@ def export_motion(motion_id: str, repo: RepoDep,
     from interplay.motion.formats.bvh import write_bvh
     from interplay.motion.kinematics import floor_height
     people = [p.astype("float64") for p in motion.people]
-    from interplay.motion.motion import leaves_in
+    from interplay.motion.captured_leaves import export_leaves
     text = write_bvh(people[person], fps=motion.fps, out_fps=int(fps), units=units, up=up, names=names,
                      floor=floor_height(people),
-                     leaves=leaves_in(motion.plan, motion.persons, motion.frames)[person])
+                     leaves=export_leaves(motion.plan, motion.persons, motion.frames)[person])
     # the file names people as the studio does: person=0 is Person 1, "…-person1.bvh"
     name = export_name(motion.id, motion.prompt, "bvh", f"-person{person + 1}")
     return Response(text, media_type="text/plain; charset=utf-8",

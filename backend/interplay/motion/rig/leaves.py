@@ -3,7 +3,8 @@ nothing in 22 joints says how they turn; they get the rotations the moves imply 
 the head turns on the neck by HEAD_SHARE of the neck's own turn (a nod, which tilts the
 neck→head bone, pitches the face further; smooth wherever the neck is); each hand trails its
 forearm's swing with a lag of HAND_LAG seconds, bent at most HAND_BEND (a wave turns the hand
-to and fro); explicit per-frame rotations (`leaves=`, e.g. from an edit) replace either. Then
+to and fro); explicit per-frame rotations (`leaves=`, e.g. from an edit or a capture's own;
+rows of NaN: derive that frame) replace either. Then
 no leaf's tip goes under the floor: a toe whose tip (the end site) would dip bends up about
 its own side-to-side axis just enough (a flat foot's toes lie on the floor), and so does a
 hand whose mesh tip (HAND_REACH along it, HAND_THICK thick) would, towards its back; both
@@ -44,6 +45,7 @@ HAND_REACH, HAND_THICK = 0.175, 0.024
 # rad/s: how fast a leaf's bend off the floor may change (`_floor_bend`): 15° a frame at
 # 20 fps, half the 30° a frame the leaves' turns keep within.
 LIFT_RATE = np.deg2rad(300.0)
+LEAF_BLEND = 4                   # frames over which derived leaves turn into explicit ones
 LIFT_MOST = np.pi / 2            # a toe or wrist bends up at most this much off the floor (a
                                  # leaf upside down: the rest is the exports' floor pass's)
 _TOES = (J["left_foot"], J["right_foot"])
@@ -127,6 +129,24 @@ def _hand_lag(joints: np.ndarray, wrist: int, fps: float) -> np.ndarray:
     return rotation_between(d, h)
 
 
+def _given(q: np.ndarray, known: np.ndarray, derived: np.ndarray) -> np.ndarray:
+    """Local rotations (T, 3, 3) from explicit quaternions q (T, 4) on the `known` frames
+    (T,) (e.g. a capture's own, `motion/captured_leaves.py`), the `derived` ones (T, 3, 3)
+    elsewhere, turned towards the nearest explicit one over LEAF_BLEND frames next to it (so
+    the hand or head does not jump where the explicit ones start or stop)."""
+    t = len(q)
+    q = np.where(known[:, None], q, 0.0)
+    q = q / np.maximum(np.linalg.norm(q, axis=-1, keepdims=True), 1e-12)
+    if known.all() or not known.any():
+        return quat_to_matrix(q) if known.all() else derived
+    idx = np.flatnonzero(known)
+    pos = np.searchsorted(idx, np.arange(t))
+    left, right = idx[np.clip(pos - 1, 0, len(idx) - 1)], idx[np.clip(pos, 0, len(idx) - 1)]
+    near = np.where(np.abs(np.arange(t) - left) <= np.abs(right - np.arange(t)), left, right)
+    w = np.clip(1.0 - np.abs(np.arange(t) - near) / (LEAF_BLEND + 1), 0.0, 1.0)
+    return quat_to_matrix(slerp(matrix_to_quat(derived), q[near], w))
+
+
 def fill_leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob: np.ndarray,
             fps: float, floor: float, given: Mapping[str, np.ndarray]) -> None:
     """Fills the local rotations of the head, wrists and toes in place (see the module's
@@ -142,9 +162,11 @@ def fill_leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob
         if name not in LEAVES:
             raise ValueError(f"explicit rotations are for {', '.join(LEAVES)}, got {name!r}")
         q = np.asarray(q, dtype=np.float64)
-        if q.shape != (len(joints), 4) or not np.all(np.isfinite(q)):
-            raise ValueError(f"{name}: rotations must be finite (T={len(joints)}, 4), got {q.shape}")
-        local[:, J[name]] = quat_to_matrix(q / np.maximum(np.linalg.norm(q, axis=-1, keepdims=True), 1e-12))
+        known = np.all(np.isfinite(q), axis=-1) if q.ndim == 2 else np.zeros(0, bool)
+        if q.shape != (len(joints), 4) or not np.all(known | np.all(np.isnan(q), axis=-1)):
+            raise ValueError(f"{name}: rotations must be finite (T={len(joints)}, 4) or rows of NaN, "
+                             f"got {q.shape}")
+        local[:, J[name]] = _given(q, known, local[:, J[name]])
     tips = end_sites(offsets)
     scale = _body_scale(offsets)
     rate = LIFT_RATE / max(float(fps), 1e-6)
