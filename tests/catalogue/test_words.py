@@ -55,3 +55,10 @@ def test_intents_patterns_are_built_once_per_catalogue_in_use():
     assert intent._PATTERNS == built                       # the same patterns, not built again
     use_catalogue(None)                                     # another catalogue: built anew
     assert not intent._PATTERNS
+
+
+def test_a_phrase_that_may_not_go_on():
+    sits = Phrases(["(sit|sits|sitting|sat) !(up*)"])
+    assert sits.search("he sits down") and not sits.search("he sits up") and not sits.search("sits upright")
+    with pytest.raises(ValueError, match="words after"):
+        parse("sit !(up) down")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-_NONWORD = re.compile(r"[^a-z0-9'é]+")
+_WORD_CHARS = frozenset("abcdefghijklmnopqrstuvwxyz0123456789'é")
 
 
 @lru_cache(maxsize=4096)
@@ -100,8 +100,8 @@ LEFT_RIGHT = re.compile(r"\b(left|right)\b")
 
 
 def words_of(text: str) -> list[str]:
-    """Lower-case words of a text (letters, digits, apostrophes)."""
-    return [w for w in _NONWORD.split(text.lower()) if w]
+    """Lower-case words of a text (letters a to z, digits, apostrophes, é)."""
+    return "".join(c if c in _WORD_CHARS else " " for c in text.lower()).split()
 
 
 # --- named gestures and poses: "<intro> <det> <adjectives> NAME <tail>" ---
@@ -135,20 +135,9 @@ def back_rx(travel_forms) -> re.Pattern:
     return rx(rf"\b(?:{verbs})\s+back\b{BACK_NOT}")
 
 
-STEP_TO_SIDE = re.compile(r"\bsteps?\s+(?:to|towards)\s+(?:the|his|her|their)\s+(?:left|right)\b")
-AROUND = re.compile(r"\bturn\w*\s+(?:all\s+the\s+way\s+)?a?round\b|\babout[- ]face\b|\bturn\w*\s+back\b")
 TURN_SIDE = re.compile(r"\bturn\w*\s+(?:to\s+(?:the|his|her|their)\s+)?(left|right)\b")
 STOPS = re.compile(r"\bstands?\s+still\b|\bstops?\b(?!\s+\w+ing\s+(?:the|a|his|her)\b)|"
                    r"\bhalts?\b|\bcomes?\s+to\s+a\s+(?:stop|halt)\b")
-FROM = re.compile(r"\bfrom\s+(?:a\s+|the\s+|his\s+|her\s+|their\s+)?(lying|lying\s+down|"
-                  r"sitting|seated|sitting\s+down|kneeling|the\s+floor|the\s+ground|floor|ground)")
-RISES = re.compile(r"\b(?:gets?|getting|got)\s+(?:back\s+)?up\b|\bstands?\s+(?:back\s+)?up\b|"
-                   r"\bstanding\s+(?:back\s+)?up\b|\brises?\b|\brising\b")
-SITS_UP = re.compile(r"\bsits?\s+up\b|\bsitting\s+up\b")
-ENDS = [(re.compile(r"\bsits?\s+up\b|\bsitting\s+up\b"), "sitting"),
-        (re.compile(r"\b(?:sits?|sitting|sat)\b(?!\s+up)|\btakes?\s+a\s+seat\b"), "sitting"),
-        (re.compile(r"\b(?:lies|lie|lying|lays?|laying)\s+(?:down|on)\b|\blies\b"), "lying"),
-        (re.compile(r"\bkneel\w*\b|\bon\s+(?:one|both|his|her|their)\s+knees?\b"), "kneeling")]
 # Held poses: on one leg (a stance or a lifted leg held), a squat held.
 ONE_LEG = re.compile(r"\b(?:stand\w*|balanc\w*|stay\w*|remain\w*)\b[^.]*?\bon (?:one|a single|the (?:left|right)"
                      r"|(?:your|his|her|their) (?:left|right)) (?:leg|foot)\b"
@@ -207,14 +196,10 @@ WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+
 CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
 STRIKING_WHILE = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
                             re.IGNORECASE)
-# A walk or run with an end in its words (to, into, away, across, around, back).
-BOUNDED = re.compile(r"\b(?:to|towards?|up\s+to|into|away|across|in\s+a\s+\w+|around|back)\b")
 COUNT_WORD = re.compile(r"\b(?:once|twice|thrice|times|\d+)\b", re.I)
 # "…, then the right": a clause that only names a side.
 SIDE_ONLY = re.compile(r"^(?:and\s+|then\s+)*(?:with\s+|using\s+)?(?:the\s+)?(left|right)"
                        r"(?:\s+(?:one|fist|hand|arm|leg|foot|side))?$")
-SPACES = re.compile(r"\s+")
-LOOSE_QUOTES = re.compile(r"(?<![A-Za-z])'|'(?![A-Za-z])|\"")
 
 
 def one_action_rx(countable) -> re.Pattern:

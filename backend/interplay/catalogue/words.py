@@ -7,7 +7,8 @@ of words (no regular expressions: the text is split into words once, a phrase is
 
 A phrase is written in the catalogue's template notation (`grammar.template_source`): words in
 order, `*` after a word any ending ("hug*": hug, hugs, hugging), `*` alone any one word,
-`(a|b c)` one of, `[a|b]` one of or none, `~3` up to three words between. Words are joined by
+`(a|b c)` one of, `[a|b]` one of or none, `~3` up to three words between, and at the end
+`!(a|b)`: the phrase may not go on with these. Words are joined by
 spaces in the text; a hyphen in a phrase's word ("high-five") takes spaces or hyphens there, an
 apostrophe ("other's") takes the apostrophe alone. A word of the text is a run of letters,
 digits and underscores, what a regular expression's `\\b…\\b` sees as one. Letters compare as
@@ -81,6 +82,7 @@ class Slot:
     alternatives: tuple[tuple[Word, ...], ...] = ()
     optional: bool = False
     gap: int = 0
+    negative: bool = False      # "!(a|b)" at the end: the phrase may not go on with these
 
 
 def _words(alternative: str) -> tuple[Word, ...]:
@@ -100,13 +102,17 @@ def parse(template: str) -> list[Slot]:
     slots: list[Slot] = []
     rest = template.strip()
     while rest:
-        if rest[0] in "([":
-            close = rest.find(")" if rest[0] == "(" else "]")
+        negative = rest.startswith("!(")
+        if rest[0] in "([" or negative:
+            close = rest.find("]" if rest[0] == "[" else ")")
             if close < 0:
                 raise ValueError(f"{template!r}: {rest[0]} not closed")
-            body = rest[1:close]
-            slots.append(Slot(tuple(_words(a) for a in body.split("|")), optional=rest[0] == "["))
+            body = rest[1 + negative:close]
+            slots.append(Slot(tuple(_words(a) for a in body.split("|")), optional=rest[0] == "[",
+                              negative=negative))
             rest = rest[close + 1:].lstrip()
+            if negative and rest:
+                raise ValueError(f"{template!r}: words after !(…)")
             continue
         word, _, rest = rest.partition(" ")
         rest = rest.lstrip()
@@ -130,6 +136,17 @@ def _joined(text: str, before: Token, after: Token, joint: str) -> bool:
     if joint == "'":
         return sep == "'"
     return sep != "" and all(c.isspace() or (joint == "-" and c == "-") for c in sep)
+
+
+def _fits(alt: tuple[Word, ...], text: str, toks: list[Token], words: list[str], k: int,
+          began: int) -> int | None:
+    """Where the words of `alt` end when they start at token k (None: they are not there)."""
+    for word, joint in alt:
+        if k >= len(toks) or not _same(word, words[k]) or (
+                k > began and not _joined(text, toks[k - 1], toks[k], joint)):
+            return None
+        k += 1
+    return k
 
 
 class Phrases:
@@ -157,15 +174,13 @@ class Phrases:
                     k += 1
                 yield from self._ends(slots, s + 1, text, toks, words, k, began)
             return
-        for alt in slot.alternatives:
-            j = k
-            for word, joint in alt:
-                if j >= len(toks) or not _same(word, words[j]) or (
-                        j > began and not _joined(text, toks[j - 1], toks[j], joint)):
-                    break
-                j += 1
-            else:
-                yield from self._ends(slots, s + 1, text, toks, words, j, began)
+        ends = [j for alt in slot.alternatives if (j := _fits(alt, text, toks, words, k, began)) is not None]
+        if slot.negative:
+            if not ends:
+                yield from self._ends(slots, s + 1, text, toks, words, k, began)
+            return
+        for j in ends:
+            yield from self._ends(slots, s + 1, text, toks, words, j, began)
         if slot.optional:
             yield from self._ends(slots, s + 1, text, toks, words, k, began)
 

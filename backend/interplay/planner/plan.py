@@ -20,6 +20,7 @@ With INTERPLAY_LLM_BASE_URL and INTERPLAY_LLM_MODEL set, `plan()` asks that mode
 from __future__ import annotations
 
 import math
+from string import ascii_letters
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.words import words
@@ -40,6 +41,14 @@ MAX_PROMPT = 500
 IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
 # Postures a step can stay in ("kneels on one knee and stays there"); part verbs hold poses.
 _POSED = {"kneel", "squat", "crouch", "sit", "lie", "stand", "pose", "balance", "lean", "bend"}
+
+
+def _without_loose_quotes(text: str) -> str:
+    """Double quotes out, and single ones but an apostrophe between two letters ("don't")."""
+    def kept(i: int, c: str) -> bool:
+        inside = 0 < i < len(text) - 1 and text[i - 1] in ascii_letters and text[i + 1] in ascii_letters
+        return c != '"' and (c != "'" or inside)
+    return "".join(c for i, c in enumerate(text) if kept(i, c))
 
 
 def _without_subject(text: str) -> str:
@@ -150,7 +159,7 @@ def _going_on(last: dict[int, tuple[str, Action]], person: int) -> str | None:
         return None
     text, action = last[person]
     ongoing = action.verb is not None and action.verb.kind == "travel" and \
-        parse_trajectory(action.text) is None and not g.BOUNDED.search(action.text)
+        parse_trajectory(action.text) is None and not words("bounded").search(action.text)
     return text if ongoing else None
 
 
@@ -160,8 +169,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
     need), or None to plan without similarity."""
     _check(prompt, persons, seconds)
     reasons: list[str] = []
-    text = g.SPACES.sub(" ", prompt.replace("’", "'").replace("“", '"').replace("”", '"')).strip()
-    text = g.LOOSE_QUOTES.sub("", text)
+    text = _without_loose_quotes(" ".join(prompt.replace("’", "'").replace("“", '"').replace("”", '"').split()))
     if questions.is_question(text):
         sim = (lambda q, opts: vocabulary().similar(q, opts)) if vocabulary else None
         try:

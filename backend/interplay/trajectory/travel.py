@@ -16,8 +16,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from interplay.catalogue.grammar import STEP_TO_SIDE, words_rx
+from interplay.catalogue.grammar import words_rx
 from interplay.catalogue.load import catalogue
+from interplay.catalogue.words import words
 from interplay.motion.kinematics import facing_angle
 
 TRAVELS = ("forward", "backward", "left", "right")
@@ -49,7 +50,7 @@ def spec_travel(spec) -> str | None:
     direction, text = d.get("direction"), str(d.get("text") or "").lower()
     if direction == "backward" and _says("backwards", text):
         return "backward"
-    if direction in ("left", "right") and (_says("sideways", text) or STEP_TO_SIDE.search(text) is not None):
+    if direction in ("left", "right") and (_says("sideways", text) or words("step_to_side").search(text) is not None):
         return direction
     return None
 

@@ -115,7 +115,7 @@ def turn_of(prompt: str, repeat: int = 1) -> tuple[int, str] | None:
     t = prompt.lower()
     if _spins().search(t):
         return 360 * (count_of(t, repeat) or 1), "any"
-    if g.AROUND.search(t):
+    if words("turns_around").search(t):
         return 180, "any"
     m = g.TURN_SIDE.search(t)
     return (90, m.group(1)) if m else None
@@ -139,9 +139,10 @@ def travel_of(prompt: str) -> str | None:
     t = prompt.lower()
     if _entry("backwards").search(t) or g.back_rx(tuple(_travel_forms())).search(t):
         return "backward"
-    side = _entry("sideways").search(t) or g.STEP_TO_SIDE.search(t)
-    if side:
-        sides = g.LEFT_RIGHT.findall(t[side.start():])
+    sideways, step = _entry("sideways").search(t), words("step_to_side").search(t)
+    start = sideways.start() if sideways else step.start if step else None
+    if start is not None:
+        sides = g.LEFT_RIGHT.findall(t[start:])
         return sides[0] if sides else "sideways"
     return None
 
@@ -191,19 +192,20 @@ def postures_of(prompt: str) -> tuple[str | None, str | None, bool]:
     gets up."""
     t = prompt.lower()
     start = None
-    m = g.FROM.search(t)
-    if m:
-        w = m.group(1)
-        start = ("sitting" if w.startswith(("sitting", "seated")) else
-                 "kneeling" if w.startswith("kneeling") else "lying")
-    rises = bool(g.RISES.search(t))
+    said = words("starts_from").search(t)
+    if said:
+        w = said.text.split()[1:]                       # "from the floor": after "from"
+        start = ("sitting" if any(x.startswith(("sitting", "seated")) for x in w) else
+                 "kneeling" if any(x.startswith("kneeling") for x in w) else "lying")
+    rises = bool(words("rises").search(t))
     end = None
-    if g.SITS_UP.search(t):
+    if words("sits_up").search(t):
         start, end = start or "lying", "sitting"
     elif rises:
         end = "standing"
     else:
-        end = next((p for rx, p in g.ENDS if rx.search(t)), None)
+        end = next((p for p, said in (("sitting", "ends_sitting"), ("lying", "ends_lying"),
+                                      ("kneeling", "ends_kneeling")) if words(said).search(t)), None)
     if start is not None and end is None:
         end = "standing"
     return start, end, rises
