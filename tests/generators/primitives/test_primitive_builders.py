@@ -117,7 +117,8 @@ def test_jumping_jacks_and_arm_circles(stand):
     over = np.minimum(out[:, sk.LEFT_HAND, 1], out[:, sk.RIGHT_HAND, 1]) > out[:, sk.HEAD, 1] + 0.1
     assert len(runs(over)) == 3 and bones_kept(out, stand) and on_floor(out)
     feet = np.abs(out[:, sk.LEFT_ANKLE, 0] - out[:, sk.RIGHT_ANKLE, 0])
-    assert feet.max() > feet[0] + 0.3                               # the feet step out
+    assert feet.max() > feet[0] + 0.3                               # the feet jump out …
+    assert len(m.jumps(m.frame_of(out))) == 6                       # … and in: two hops a jack
     out = exercise.arm_circles(stand, 3)
     from interplay.generators.primitives.body import axes
     left, up, fwd = axes(out)

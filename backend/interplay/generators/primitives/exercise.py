@@ -27,7 +27,8 @@ SIDES = ("left", "right")
 UP = np.array([0.0, 1.0, 0.0])
 PUSH_RISE_M = 0.30      # the shoulders' rise at the top of a push-up
 SITUP_DEG = 70.0        # the trunk's curl at the top of a sit-up
-JACK_FEET_M = 0.22      # each foot's step out in a jumping jack
+JACK_FEET_M = 0.22      # each foot's step out in a jumping jack …
+JACK_HOP_M = 0.12       # … on a hop: the body lifted while the feet go out and while they come in
 CIRCLE_M = 0.15         # the radius of an arm circle
 
 
@@ -90,7 +91,8 @@ def sit_ups(base: np.ndarray, count: int) -> np.ndarray:
 
 def jumping_jacks(base: np.ndarray, count: int) -> np.ndarray:
     """The standing base with `count` jumping-jack cycles: hands from the sides to over the
-    head and back, the feet stepping out and back in time."""
+    head and back, the feet jumping out and back in time (two hops a cycle, the body lifted
+    JACK_HOP_M at the middle of each move of the feet)."""
     j = np.asarray(base, dtype=np.float64)
     t = len(j)
     env = envelope(t)
@@ -108,7 +110,12 @@ def jumping_jacks(base: np.ndarray, count: int) -> np.ndarray:
         d = np.cos(a)[:, None] * -up + np.sin(a)[:, None] * sign * left
         goal = sh + length * unit(d + 0.05 * fwd)
         out = hand_to(out, s, goal + 0.2 * (goal - sh), sh - 0.3 * fwd + 0.0 * up, env)
-    return out
+    cycle, ph = phase(t, count)
+    # each half-cycle: on the floor, then a flight over its middle 60 % (a falling arc), then
+    # the floor again, so the hops stay apart
+    u = np.clip(((2.0 * ph) % 1.0 - 0.2) / 0.6, 0.0, 1.0)
+    lift = JACK_HOP_M * np.where(cycle >= 0, 4.0 * u * (1.0 - u), 0.0)
+    return out + lift[:, None, None] * up[:, None, :]
 
 
 def arm_circles(base: np.ndarray, count: int, side: str = "both") -> np.ndarray:
