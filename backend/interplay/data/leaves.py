@@ -13,14 +13,24 @@ that match the library's clip frame for frame. The file holds
                                identity = a T-pose facing +Z, the hand along the forearm
     index  JSON text           [{"id", "person", "start", "frames"}] into quats
 
-Read by `interplay.motion.captured_leaves`. Carried today: the Daz-named CMU BVH family
-(cmu-bvh: 54 of its 56 clips, the other two are Acclaim-named; cmu-salsa: both dancers).
-The same pipeline as the positions is replayed on the rotations: the converter's lead-in cut,
-the capture rate's resampling to 20 fps (slerp at the very times `kinematics.resample` takes),
-the canonical yaw. Each hand's rest correction maps the rig's rest hand (along the template's
-rest forearm) onto the source's rest hand (wrist → middle finger); the head needs none (both
-rests face +Z, Y up). The build reports, per source, how far the carried hands and heads are
-from the library's own bones (a check that frames and axes line up).
+Read by `interplay.motion.captured_leaves`. Carried today: the BVH sources whose files name
+a head and hands: cmu-bvh (the 54 Daz-named of its 56 clips; the other two are
+Acclaim-named), cmu-salsa (both dancers) and bandai-namco (593 clips). The positions' own
+pipeline is replayed on the rotations: the converter's lead-in cut, the capture rate's
+resampling to 20 fps (slerp at the very times `kinematics.resample` takes), the canonical yaw.
+
+Rest correction C per leaf (the world orientation stored is the file's leaf frame times C):
+- Daz rests as the rig does (a T-pose facing +Z, Y up): the head needs none, each hand the
+  turn from the rig's rest hand (along the template's rest forearm) onto the file's (wrist →
+  middle finger), exact from the rest figure.
+- Bandai Namco's rest figure lies along +X (every bone along its own X), so C is measured:
+  each leaf is carried relative to its parent bone, C being the mean rotation from the file's
+  parent bone frame (neck, forearm) to the rig's (`solve_rig` on the library's joints) over
+  the first RESTS people (the SVD projection of the mean matrix): a leaf at rest on its parent
+  in the file is at rest on its parent in the rig (measured: 136° for the head, 3° and 174°
+  for the left and right hands: the right arm's X points the other way).
+The build reports how far the carried hands and heads are from the library's own bones
+(frames and axes lining up: medians 4–20°; a yaw 90° off puts the hands 60–70° off).
 
     interplay data leaves                      # every carried source (~20 s)
     interplay data leaves --only cmu-salsa
@@ -45,9 +55,14 @@ from interplay.motion.rotations import matrix_to_quat, quat_to_matrix, rotation_
 
 REPO = Path(__file__).resolve().parents[3]
 DEFAULT_SOURCE = REPO.parent / "shared" / "data"
-# Daz bones whose global rotations are the leaves', and each hand's rest direction's child.
-DAZ_BONES = {"head": "head", "left_wrist": "lHand", "right_wrist": "rHand"}
-DAZ_FINGER = {"left_wrist": "lMid1", "right_wrist": "rMid1"}
+# Per BVH family, each leaf's bone and its parent bone's (the rig's parent joint's match).
+BONES: dict[str, dict[str, tuple[str, str]]] = {
+    "daz": {"head": ("head", "neck"), "left_wrist": ("lHand", "lForeArm"),
+            "right_wrist": ("rHand", "rForeArm")},
+    "bandai-namco": {"head": ("Head", "Neck"), "left_wrist": ("Hand_L", "LowerArm_L"),
+                     "right_wrist": ("Hand_R", "LowerArm_R")},
+}
+RESTS = 24                       # people per source the rest correction is measured on
 J = sk.JOINT_INDEX
 
 
@@ -66,46 +81,67 @@ def _slerp_resample(q: np.ndarray, src_fps: float, dst_fps: float = sk.FPS) -> n
     return slerp(q[lo], q[hi], w)
 
 
-def daz_world(path: Path, cut: int, fps: float, yaw: float) -> np.ndarray | None:
-    """The head's and hands' world orientations (T, 3, 4) of a Daz-named CMU BVH, replayed
-    through the positions' pipeline (lead-in `cut`, capture rate `fps` → 20, canonical
-    `yaw`); None for a file of another family."""
+def bvh_globals(path: Path, cut: int, fps: float, yaw: float) -> dict[str, np.ndarray] | None:
+    """Per leaf, the world rotations (T, 2, 3, 3) of its bone and its parent bone in a
+    Daz-named CMU or a Bandai Namco BVH (both Y up), replayed through the positions'
+    pipeline (lead-in `cut`, capture rate `fps` → 20, canonical `yaw`), and for Daz "rest":
+    the exact rest corrections (3, 3, 3) of the head and hands; None for a file of another
+    family."""
     from interplay.motion.formats.bvh import read_bvh
-    from interplay.motion.retarget.cmu_daz import acclaim_names, skeleton_family
+    from interplay.motion.retarget.cmu_daz import acclaim_names
     bvh = acclaim_names(read_bvh(path))
-    if skeleton_family(bvh) != "daz":
+    family = next((f for f, bones in BONES.items()
+                   if all(b in bvh.names for pair in bones.values() for b in pair)), None)
+    if family is None:
         return None
     rot, _ = bvh.local_transforms()
-    parents = list(bvh.parents)
-    _, glob = forward_kinematics(rot[cut:], np.zeros((len(rot) - cut, 3)), bvh.offsets, parents)
-    rest = replace(bvh, motion=np.zeros((1, bvh.motion.shape[1]))).named_positions()
-    out = []
-    for leaf in LEAF_NAMES:
-        g = glob[:, bvh.index(DAZ_BONES[leaf])]
-        if leaf in DAZ_FINGER:                                  # rest hand: rig's → source's
-            src = rest[DAZ_FINGER[leaf]][0] - rest[DAZ_BONES[leaf]][0]
-            g = g @ rotation_between(sk.REST_OFFSETS[J[leaf]], src)
-        out.append(matrix_to_quat(yaw_matrix(yaw) @ g))
-    q = np.stack(out, axis=1)
-    return _slerp_resample(q, fps)
+    _, glob = forward_kinematics(rot[cut:], np.zeros((len(rot) - cut, 3)), bvh.offsets, list(bvh.parents))
+    out = {}
+    for leaf, pair in BONES[family].items():
+        g = yaw_matrix(yaw) @ glob[:, [bvh.index(b) for b in pair]]
+        out[leaf] = quat_to_matrix(_slerp_resample(matrix_to_quat(g), fps))
+    if family == "daz":                          # rests as the rig: exact corrections (docstring)
+        rest = replace(bvh, motion=np.zeros((1, bvh.motion.shape[1]))).named_positions()
+        out["rest"] = np.stack([np.eye(3)] + [
+            rotation_between(sk.REST_OFFSETS[J[leaf]], rest[finger][0] - rest[hand][0])
+            for leaf, hand, finger in (("left_wrist", "lHand", "lMid1"), ("right_wrist", "rHand", "rMid1"))])
+    return out
 
 
-def _carry(clip: Clip, src: Path) -> list[np.ndarray | None]:
-    """Per person of a library clip, its leaves' world orientations, or None."""
+def rest_corrections(samples: list[tuple[dict[str, np.ndarray], np.ndarray]]) -> dict[str, np.ndarray]:
+    """Per leaf, C (3, 3): the mean rotation from the file's parent bone frame to the rig's
+    parent joint frame over `samples` (a person's `bvh_globals`, their library joints)."""
+    from interplay.motion.rig import global_rotations, solve_rig
+    sums = {leaf: np.zeros((3, 3)) for leaf in LEAF_NAMES}
+    for globs, joints in samples:
+        rig = global_rotations(solve_rig(joints))
+        for leaf in LEAF_NAMES:
+            parent = rig[:, sk.PARENTS[J[leaf]]]
+            sums[leaf] += np.einsum("tji,tjk->ik", globs[leaf][:, 1], parent)
+    out = {}
+    for leaf, m in sums.items():
+        u, _, vt = np.linalg.svd(m)
+        out[leaf] = u @ np.diag([1.0, 1.0, np.linalg.det(u @ vt)]) @ vt
+    return out
+
+
+def _carry(clip: Clip, src: Path) -> list[dict[str, np.ndarray] | None]:
+    """Per person of a library clip, its `bvh_globals`, or None."""
     meta = clip.meta
-    if clip.source == "cmu-bvh":
+    if clip.source in ("cmu-bvh", "bandai-namco"):
         files = [meta["file"]]
     elif clip.source == "cmu-salsa":
         files = list(meta["files"])
     else:
         return [None] * len(clip.people)
-    out: list[np.ndarray | None] = []
+    out: list[dict[str, np.ndarray] | None] = []
     for k, rel in enumerate(files):
-        q = daz_world(src / rel, int(meta["lead_in_frames"]), float(meta["native_fps"]),
-                      float(meta["canonical"]["yaw"]))
-        if q is not None and len(q) != clip.people[k].shape[0]:
-            raise ValueError(f"{clip.id}: {len(q)} carried frames for {clip.people[k].shape[0]} in the library")
-        out.append(q)
+        g = bvh_globals(src / rel, int(meta.get("lead_in_frames", 0)), float(meta["native_fps"]),
+                        float(meta["canonical"]["yaw"]))
+        if g is not None and len(g["head"]) != clip.people[k].shape[0]:
+            raise ValueError(f"{clip.id}: {len(g['head'])} carried frames for {clip.people[k].shape[0]} "
+                             f"in the library")
+        out.append(g)
     return out
 
 
@@ -127,29 +163,34 @@ def agreement(joints: np.ndarray, q: np.ndarray) -> dict[str, float]:
 
 def build_leaves(source: str, src: Path, out: Path) -> dict:
     """Writes `<out>/leaves/<source>.npz` for the library's clips of a source; returns a
-    summary (clips and person-frames carried, median agreement per leaf)."""
+    summary (people and person-frames carried, median agreement per leaf)."""
     clips = [c for c in load_clips(out) if c.source == source]
+    people = [(clip, k, g) for clip in clips for k, g in enumerate(_carry(clip, src)) if g is not None]
+    if not people:
+        raise ValueError(f"{source}: no clip carries its leaves")
+    if "rest" in people[0][2]:
+        fix = dict(zip(LEAF_NAMES, people[0][2]["rest"]))
+    else:
+        fix = rest_corrections([(g, np.asarray(clip.people[k], np.float64)) for clip, k, g in people[:RESTS]])
     quats, index, agree = [], [], []
     start = 0
-    for clip in clips:
-        for k, q in enumerate(_carry(clip, src)):
-            if q is None:
-                continue
-            index.append({"id": clip.id, "person": k, "start": start, "frames": len(q)})
-            quats.append(q.astype(np.float16))
-            agree.append(agreement(np.asarray(clip.people[k], np.float64), q))
-            start += len(q)
-    if not quats:
-        raise ValueError(f"{source}: no clip carries its leaves")
+    for clip, k, g in people:
+        q = np.stack([matrix_to_quat(g[leaf][:, 0] @ fix[leaf]) for leaf in LEAF_NAMES], axis=1)
+        index.append({"id": clip.id, "person": k, "start": start, "frames": len(q)})
+        quats.append(q.astype(np.float16))
+        agree.append(agreement(np.asarray(clip.people[k], np.float64), q))
+        start += len(q)
     leaves_file(source, out).parent.mkdir(parents=True, exist_ok=True)
     np.savez_compressed(leaves_file(source, out), quats=np.concatenate(quats),
                         index=np.array(json.dumps(index)))
-    return {"source": source, "people": len(index), "frames": start,
+    turn = {leaf: round(float(np.degrees(np.arccos(np.clip((np.trace(c) - 1) / 2, -1, 1)))), 1)
+            for leaf, c in fix.items()}
+    return {"source": source, "people": len(index), "frames": start, "rest_correction_deg": turn,
             "agreement_deg": {leaf: round(float(np.median([a[leaf] for a in agree])), 1)
                               for leaf in LEAF_NAMES}}
 
 
-CARRIED = ("cmu-bvh", "cmu-salsa")
+CARRIED = ("cmu-bvh", "cmu-salsa", "bandai-namco")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -165,9 +206,9 @@ def main(argv: list[str] | None = None) -> int:
     for source in args.only or CARRIED:
         t0 = time.time()
         summary = build_leaves(source, args.source, args.out)
-        print(f"{source:10s} {summary['people']:3d} people {summary['frames']:6d} frames "
-              f"{time.time() - t0:5.1f} s; median angle to the library's bones (deg): "
-              f"{summary['agreement_deg']}", flush=True)
+        print(f"{source:12s} {summary['people']:3d} people {summary['frames']:6d} frames "
+              f"{time.time() - t0:5.1f} s; rest correction (deg) {summary['rest_correction_deg']}; "
+              f"median angle to the library's bones (deg) {summary['agreement_deg']}", flush=True)
     return 0
 
 
