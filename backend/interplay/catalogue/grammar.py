@@ -191,6 +191,17 @@ def template_rx(templates) -> re.Pattern:
     return rx("|".join(f"(?:{template_source(t)})" for t in templates) or r"(?!x)x", re.IGNORECASE)
 
 
+# --- context that names no motion (planner/context.py): proper names after a preposition
+# (case matters: "at Wembley", "against the Lakers"), years and months, "in a … celebration" ---
+CONTEXT_EVENT = re.compile(r"\s*\b(?:during|against|at|for|versus|vs\.?)\s+(?:the\s+)?(?:[A-Z][\w'’.-]*\s*)+"
+                           r"(?:derby|game|match|final|cup|stadium|league|championship|tournament)?")
+CONTEXT_YEAR = re.compile(r"\s*\bin\s+(?:[A-Z][a-z]+\s+)?(?:\d{4})\b")
+CONTEXT_MONTH = re.compile(r"\s*\bin\s+(?:january|february|march|april|may|june|july|august|september|october|"
+                           r"november|december)(?:\s+\d{4})?\b", re.IGNORECASE)
+CONTEXT_CELEBRATION = re.compile(r"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|their)\s+[\w\s'’-]{0,40}?celebration\b",
+                                 re.IGNORECASE)
+
+
 # --- the planner's sentence structure (planner/plan.py) ---
 WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
 CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")

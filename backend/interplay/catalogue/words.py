@@ -18,7 +18,7 @@ written unless the list is read with `ignore_case`.
 from __future__ import annotations
 
 import tomllib
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -126,9 +126,19 @@ def parse(template: str) -> list[Slot]:
 
 
 def _same(word: str, token: str) -> bool:
-    if word == "*":
-        return True
-    return token.startswith(word[:-1]) if word.endswith("*") else token == word
+    """Whether a token is the word; a `*` in the word stands for any letters ("hug*", "*ing*")."""
+    if "*" not in word:
+        return token == word
+    head, *middle, tail = word.split("*")
+    if not (token.startswith(head) and token.endswith(tail) and len(token) >= len(head) + len(tail)):
+        return False
+    at, end = len(head), len(token) - len(tail)
+    for part in middle:
+        at = token.find(part, at, end)
+        if at < 0:
+            return False
+        at += len(part)
+    return True
 
 
 def _joined(text: str, before: Token, after: Token, joint: str) -> bool:
@@ -223,14 +233,18 @@ class Phrases:
             return False
         return any(e == len(toks) for slots in self.slots for e in self._ends(slots, 0, text, toks, words, 0, 0))
 
-    def cut(self, text: str, lead: str = " ", count: int = 0) -> str:
-        """`text` without the phrases (the first `count` of them; 0: all) and what leads up to
-        each: lead " " any spaces, "+" one space or more (a phrase without is kept), "," spaces,
-        one comma, spaces."""
+    def sub(self, text: str, new: Callable[[Found], str], lead: str = "", trail: bool = False,
+            clause: bool = False, count: int = 0) -> str:
+        """`text` with each phrase (the first `count` of them; 0: all) and what leads up to it
+        replaced by `new(found)`: lead "" nothing, " " any spaces, "+" one space or more (a phrase
+        without is kept), "," spaces, one comma, spaces; `trail`: the spaces after it too;
+        `clause`: the rest of its clause too (up to , . ; ! ? or the end)."""
         out, done, n = "", 0, 0
         for f in self.finditer(text):
-            start = f.start
-            while start > done and text[start - 1].isspace():
+            start, end = f.start, f.end
+            if start < done:
+                continue
+            while lead and start > done and text[start - 1].isspace():
                 start -= 1
             if lead == "+" and start == f.start:
                 continue
@@ -238,10 +252,18 @@ class Phrases:
                 start -= 1
                 while start > done and text[start - 1].isspace():
                     start -= 1
-            out, done, n = out + text[done:start], f.end, n + 1
+            while clause and end < len(text) and text[end] not in ",.;!?":
+                end += 1
+            while trail and end < len(text) and text[end].isspace():
+                end += 1
+            out, done, n = out + text[done:start] + new(Found(start, end, text[start:end])), end, n + 1
             if n == count:
                 break
         return out + text[done:]
+
+    def cut(self, text: str, lead: str = " ", count: int = 0) -> str:
+        """`text` without the phrases and what leads up to each (see `sub`)."""
+        return self.sub(text, lambda found: "", lead, count=count)
 
 
 @lru_cache(maxsize=1)

@@ -17,11 +17,11 @@ correction events on the last segment, so the studio's timeline shows the verdic
 
 from __future__ import annotations
 
-import re
 from typing import Callable
 
 import numpy as np
 
+from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request
 from interplay.generators.interaction.kinds import kind_checks, read_script
 from interplay.generators.plan import GenerationPlan
@@ -50,7 +50,6 @@ KIND_CHECKS: dict[str, list[dict]] = {
     "side_by_side": [{"check": "side_by_side"}],
     "approach": [{"check": "approach"}],
 }
-DANCE = r"\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*"
 DANCE_CHECKS = [{"check": "close_together"}, {"check": "active", "person": "both"}]
 
 
@@ -60,7 +59,7 @@ def interaction_specs(plan: GenerationPlan) -> list[dict]:
     if plan.persons != 2:
         return []
     spin = asks_spin(plan.prompt)
-    if spin or re.search(DANCE, plan.prompt.lower()):
+    if spin or words("dance").search(plan.prompt.lower()):
         return [dict(s) for s in DANCE_CHECKS] + ([{"check": "partner_spin"}] if spin else [])
     comp = plan.composition or {}
     script = comp.get("script")

@@ -11,79 +11,95 @@ can be recognised as places and events. Every change is returned as a reason.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
+from dataclasses import dataclass
 
-_I = re.IGNORECASE
-_MONTHS = ("january|february|march|april|may|june|july|august|september|october|november|"
-           "december")
-_EMOTIONS = ("angry|angrily|hopeless|hopelessly|happy|happily|sad|sadly|excited|excitedly|tired|"
-             "worried|nervous|nervously|proud|proudly|joyful|joyfully|furious|furiously|bored|"
-             "scared|frightened|desperate|desperately|exhausted|elated|confident|confidently|shy|"
-             "annoyed|frustrated|triumphant|triumphantly|cheerful|cheerfully|grumpy|upset|"
-             "relieved|surprised|delighted|ecstatic|enthusiastic|enthusiastically|jubilant|"
-             "disappointed|anxious|anxiously|lonely|bravely|brave")
-_STATES = ("excitement|ecstasy|joy|anger|frustration|despair|triumph|celebration|rhythm|"
-           "disbelief|pain|fear|delight|victory|relief|surprise|unison|time to the music|"
-           "protest|happiness|sadness|jubilation|glee|panic|shock|agony")
-_PURPOSES = ("taunt|celebrate|protest|impress|tease|mock|annoy|entertain|greet|show off|express|"
-             "honou?r|mark|thank|cheer|please|scare|warn|signal|find|win|intimidate|distract|"
-             "comfort|encourage|amuse|attract|pretend to be (?!inside|in |trapped)|look for|"
-             "search for|escape from|hide from|catch (?:a|the) (?:bus|train)")
-_AUDIENCE = ("friends|crowd|audience|fans|family|camera|mirror|class|team|people|everyone|"
-             "others|spectators|supporters|teammates|opponents?|home team|away team|referee|"
-             "judges?|coach|kids|children|parents|house|building|goal")
-_PLACES = "court|field|pitch|tatami|mat|stage|grass|ground|carpet|beach|sand|dance floor|track"
+from interplay.catalogue import grammar as g
+from interplay.catalogue.words import Found, Phrases, words
 
-# (pattern, replacement, flags, what it is). Applied in order; the first two are case-sensitive
-# on purpose (capitalised names after a preposition are places, teams, events).
-RULES: list[tuple[str, str, int, str]] = [
-    (r"\s*\b(?:during|against|at|for|versus|vs\.?)\s+(?:the\s+)?(?:[A-Z][\w'’.-]*\s*)+"
-     r"(?:derby|game|match|final|cup|stadium|league|championship|tournament)?", " ", 0, "event/place"),
-    (r"\s*\bin\s+(?:[A-Z][a-z]+\s+)?(?:\d{4})\b", " ", 0, "date"),
-    (rf"\s*\bin\s+(?:{_MONTHS})(?:\s+\d{{4}})?\b", " ", _I, "date"),
-    (r"\s*\b(?:before|after|during)\s+the\s+(?:game|match|show|race|fight|concert|party|class|"
-     r"meeting|final|wedding)(?:\s+(?:started|starts|begins|began|ended|ends|was\s+over))?\b", " ", _I,
-     "occasion"),
-    (rf"\s*\bin\s+front\s+of\s+(?:his|her|their|the|a|an|my|our)\s+(?:{_AUDIENCE})\b", " ", _I, "audience"),
-    (rf"\s*,?\s*\b(?:in\s+order\s+)?to\s+(?:{_PURPOSES})\b[^,.;!?]*", " ", _I, "purpose"),
-    (r"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|their)\s+[\w\s'’-]{0,40}?celebration\b", " ", _I,
-     "occasion"),
-    (rf"\s*\b(?:in|with|out\s+of)\s+(?:pure\s+|great\s+|sheer\s+)?(?:{_STATES})\b", " ", _I, "mood"),
-    (rf"\b(?:{_EMOTIONS})\b\s*", "", _I, "mood"),
-    (r"\s*\bon\s+(?:another|an?|the|his|her|their)\s+(?:other\s+)?(?:player|opponent|defender|"
-     r"attacker|striker|goalkeeper|man|person)\b", " ", _I, "target"),
-    (rf"\bon\s+(?:the\s+|a\s+)?(?:{_PLACES})(?:\s+floor)?\b", "on the floor", _I, "place"),
-    (r"\b(?:to|towards|onto|into)\s+(?:the\s+)?(?:cent(?:er|re)\s+(?:of\s+the\s+)?stage|field|"
-     r"pitch|court|stage|goal|door|crowd|corner\s+flag|finish\s+line|podium|net)\b", "forward", _I,
-     "place"),
-    (r"\s*\b(?:on|in)\s+(?:a|the)\s+(?:sunny|rainy|cold|hot|windy|snowy|beautiful)\s+"
-     r"(?:day|night|morning|afternoon|evening)\b", " ", _I, "weather"),
-    (r"\s*\b(?:in|at)\s+the\s+(?:park|office|gym|beach|street|morning|evening|party|club|rain|"
-     r"snow|kitchen|garden|living\s+room)\b", " ", _I, "place"),
-    (r"\blos(?:es|e|t|ing)\s+control\b(?:\s+and)?\s*", "", _I, "state"),
-    (r"\s*\bin\s+(?:his|her|their|the)\s+way\b", " ", _I, "place"),
-    (r"\s*\b(?:shortly|soon|right|immediately|just)\s+after(?:wards)?\b(?!\s+(?:that|the|a|\w+ing))",
-     " ", _I, "timing"),
-    (r"\bcalmly\b", "slowly", _I, "manner"),
-    (r"\bin\s+a\s+(?:hurry|rush)\b", "quickly", _I, "manner"),
-    (r"\b(wav(?:e|es|ed|ing))\s+(?:hello|goodbye|hi|bye)\b(?:\s+to\s+\w+)?", r"\1 the right hand", _I,
-     "greeting"),
-    (r"\s*\bthe\s+(?:home|away|rival|other)\s+(?:team|crowd|side)\b", " ", _I, "audience"),
+
+@dataclass(frozen=True)
+class Said:
+    """A list of words.toml found in the text: what leads up to each phrase and what follows
+    it go too (`Phrases.sub`)."""
+    phrases: Phrases
+    lead: str = " "
+    trail: bool = False
+    clause: bool = False
+
+
+def _said(name: str, lead: str = " ", trail: bool = False, clause: bool = False) -> Said:
+    return Said(words(name, ignore_case=True), lead, trail, clause)
+
+
+# (how it is found, what replaces it, what it is), applied in order. Proper names, years and
+# "in a … celebration" are sentence structure (grammar.py; case matters: capitalised names after
+# a preposition are places, teams, events); the rest are words.toml's context lists. "{1}": the
+# phrase's first word ("waves hello" → "waves the right hand").
+RULES: list[tuple[re.Pattern | Said, str, str]] = [
+    (g.CONTEXT_EVENT, " ", "event/place"),
+    (g.CONTEXT_YEAR, " ", "date"),
+    (g.CONTEXT_MONTH, " ", "date"),
+    (_said("context_occasion"), " ", "occasion"),
+    (_said("context_audience"), " ", "audience"),
+    (_said("context_purpose", lead=",", clause=True), " ", "purpose"),
+    (g.CONTEXT_CELEBRATION, " ", "occasion"),
+    (_said("context_mood"), " ", "mood"),
+    (_said("context_emotion", lead="", trail=True), "", "mood"),
+    (_said("context_target"), " ", "target"),
+    (_said("context_floor", lead=""), "on the floor", "place"),
+    (_said("context_forward", lead=""), "forward", "place"),
+    (_said("context_weather"), " ", "weather"),
+    (_said("context_place"), " ", "place"),
+    (_said("context_control", lead="", trail=True), "", "state"),
+    (_said("context_way"), " ", "place"),
+    (_said("context_timing"), " ", "timing"),
+    (_said("context_calmly", lead=""), "slowly", "manner"),
+    (_said("context_hurry", lead=""), "quickly", "manner"),
+    (_said("context_greeting", lead=""), "{1} the right hand", "greeting"),
+    (_said("context_team"), " ", "audience"),
 ]
-_COMPILED = [(re.compile(p, f), r, what) for p, r, f, what in RULES]
+
+
+def _reason(old: str, new: str, what: str) -> str:
+    old = old.strip(" ,")
+    if new.strip():
+        return f"context ({what}): '{old}' → '{new.strip()}'"
+    return f"context ({what}): dropped '{old}'"
+
+
+def _apply(text: str, how: re.Pattern | Said, repl: str, what: str, reasons: list[str]) -> str:
+    def new(old: str) -> str:
+        out = repl.replace("{1}", old.split()[0]) if "{1}" in repl else repl
+        reasons.append(_reason(old, out, what))
+        return out
+    if isinstance(how, Said):
+        sub: Callable[[Found], str] = lambda found: new(found.text)        # noqa: E731
+        return how.phrases.sub(text, sub, how.lead, how.trail, how.clause)
+    return how.sub(lambda m: new(m.group(0)), text)
 
 
 def strip_context(text: str) -> tuple[str, list[str]]:
     """The text without motion-irrelevant context, and one reason per change."""
-    reasons = []
-    for rx, repl, what in _COMPILED:
-        def sub(m, repl=repl, what=what):
-            new = m.expand(repl) if "\\" in repl else repl
-            old = m.group(0).strip(" ,")
-            if new.strip():
-                reasons.append(f"context ({what}): '{old}' → '{new.strip()}'")
-            else:
-                reasons.append(f"context ({what}): dropped '{old}'")
-            return new
-        text = rx.sub(sub, text)
-    text = re.sub(r"\s+([,.;!?])", r"\1", re.sub(r"\s{2,}", " ", text)).strip()
-    return re.sub(r"^[,;\s]+", "", text), reasons
+    reasons: list[str] = []
+    for how, repl, what in RULES:
+        text = _apply(text, how, repl, what, reasons)
+    return _tidy(text), reasons
+
+
+def _tidy(text: str) -> str:
+    """Runs of spaces as one, none before a punctuation mark, none (nor a comma) to start."""
+    out: list[str] = []
+    run = ""
+    for c in text + "\0":
+        if c.isspace():
+            run += c
+            continue
+        if run and c not in ",.;!?":
+            out.append(run if len(run) == 1 else " ")
+        run = ""
+        out.append(c)
+    text = "".join(out[:-1]).strip()
+    while text and (text[0] in ",;" or text[0].isspace()):
+        text = text[1:]
+    return text

@@ -17,7 +17,6 @@ the one that passed most.
 from __future__ import annotations
 
 import dataclasses
-import re
 import weakref
 
 import numpy as np
@@ -31,11 +30,15 @@ from interplay.motion.checks.named import run_check
 # a partner spun: "spins the follower", "twirls her", "turns under his arm" (not "both spin")
 SPIN_CHECK = {"check": "partner_spin"}
 CLOSE_CHECK = {"check": "close_together"}
-DANCE = r"\bdanc\w*|\bsalsa\b|\btango\b|\bwaltz\w*|\bcouple\b"
 SPIN_S, SPIN_DEG, SPIN_NEAR_M = 2.5, 300.0, 1.2     # the check's defaults
 PAD = 5               # frames kept either side of a spin window when the segment is short
 TRIES = 8
 _SPINNING: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _dance(text: str) -> bool:
+    """A couple's dance: a dance word, or "couple"."""
+    return bool(words("dance").search(text) or words("a_couple").search(text))
 
 
 def asks_spin(text: str) -> bool:
@@ -97,7 +100,7 @@ def couple_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.G
         specs = [SPIN_CHECK, CLOSE_CHECK]
     elif index.use_pair(text):
         cands = index.shortlist(text, True, rng)
-        specs = [CLOSE_CHECK] if re.search(DANCE, text.lower()) else []
+        specs = [CLOSE_CHECK] if _dance(text.lower()) else []
     else:
         return None
     if not cands:
