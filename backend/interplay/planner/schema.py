@@ -230,13 +230,16 @@ class Coverage(BaseModel):
     in the catalogue fits: the nearest clip is shown and the segment is reported not covered).
     similarity: the text-encoder cosine that chose it (catalogue entry or caption), in [-1, 1].
     confidence: calibrated probability that the segment shows its words, in [0, 1].
-    shown: what was shown, in words (the entry or caption it was made from)."""
+    shown: what was shown, in words (the entry or caption it was made from).
+    entry: always a catalogue entry's name (what the words were read as, whose checks the
+    reviewer adds); primitive: the primitive's name (a push-up entry is built by "push_up")."""
     model_config = ConfigDict(extra="forbid")
     how: CoverageHow
     similarity: float = Field(ge=-1.0, le=1.0)
     confidence: float | None = Field(default=None, ge=0.0, le=1.0)   # set once the judge has scored it
     shown: str = Field(default="", max_length=300)
     entry: str | None = None          # the catalogue entry it was matched to
+    primitive: str | None = None      # how = primitive: the primitive that built it
 
 
 # Optional segment fields added after plans were first stored: left out of the JSON when unset,

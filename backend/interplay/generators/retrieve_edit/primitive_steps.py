@@ -92,6 +92,12 @@ def _activity_over_verb(seg: GenerationSegment, encoder) -> tuple[Primitive, flo
     return (prim, sim) if sim - own >= ACTIVITY_MARGIN else None
 
 
+def _entry_of(prim: Primitive) -> str | None:
+    """The catalogue entry a primitive makes (an activity is its own entry; a table primitive
+    the first entry made by it: "push_up" makes "push-ups")."""
+    return next((a.name for a in catalogue().action if primitive_of(a) == prim.name), None)
+
+
 def choose(plan: GenerationPlan, encoder) -> list[str]:
     """Mark the segments a primitive makes (their coverage); the plan's reasons for each."""
     reasons: list[str] = []
@@ -113,15 +119,15 @@ def choose(plan: GenerationPlan, encoder) -> list[str]:
             prim, sim = found
         else:
             continue
-        seg.coverage = Coverage(how="primitive", similarity=round(sim, 4), entry=prim.name,
-                                shown=prim.descriptions[0])
+        seg.coverage = Coverage(how="primitive", similarity=round(sim, 4), entry=_entry_of(prim),
+                                primitive=prim.name, shown=prim.descriptions[0])
         reasons.append(f"segment {seg.index}: made by the primitive '{prim.name}' "
                        f"({prim.descriptions[0]}; similarity {sim:.2f})")
     return reasons
 
 
 def _params(seg: GenerationSegment) -> dict:
-    prim = PRIMITIVES[seg.coverage.entry]  # type: ignore[union-attr, index]
+    prim = PRIMITIVES[seg.coverage.primitive]  # type: ignore[union-attr, index]
     params: dict = {"seconds": (seg.end - seg.start) / 20.0}
     count = count_of(seg.prompt, seg.repeat) if prim.counts else None
     if count:
@@ -151,10 +157,10 @@ def lay(joints: np.ndarray, plan: GenerationPlan) -> np.ndarray:
     """One person's (T, 22, 3) joints with every primitive segment's frames built and placed."""
     out = joints.astype(np.float64).copy()
     for seg in plan.segments:
-        if seg.coverage is None or seg.coverage.how != "primitive" or seg.coverage.entry not in PRIMITIVES:
+        if seg.coverage is None or seg.coverage.how != "primitive" or seg.coverage.primitive not in PRIMITIVES:
             continue
         a, b = seg.start, seg.end
-        made = _fit(build(PRIMITIVES[seg.coverage.entry], _params(seg)), b - a)
+        made = _fit(build(PRIMITIVES[seg.coverage.primitive], _params(seg)), b - a)
         placed = _placed(made, out[a - 1] if a > 0 else out[a])
         if a > 0:                       # eased in from the pose the motion is in
             k = min(EASE, b - a)
