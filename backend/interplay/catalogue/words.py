@@ -28,10 +28,26 @@ from pydantic import BaseModel, ConfigDict, field_validator
 PATH = Path(__file__).with_name("words.toml")
 
 
+class Question(BaseModel):
+    """A question the planner answers with a motion: the phrases that say what it is about."""
+    model_config = ConfigDict(extra="forbid")
+    keys: list[str]
+    answer: str
+    about: str
+
+    @field_validator("keys")
+    @classmethod
+    def _keys_parse(cls, keys: list[str]) -> list[str]:
+        for k in keys:
+            parse(k)
+        return keys
+
+
 class WordLists(BaseModel):
-    """words.toml: named lists of phrases (the file says what each is for)."""
+    """words.toml: named lists of phrases, and the questions (the file says what each is for)."""
     model_config = ConfigDict(extra="forbid")
     lists: dict[str, list[str]]
+    question: list[Question] = []
 
     @field_validator("lists")
     @classmethod
@@ -267,9 +283,19 @@ class Phrases:
 
 
 @lru_cache(maxsize=1)
+def word_lists() -> WordLists:
+    """words.toml, validated."""
+    return WordLists.model_validate(tomllib.loads(PATH.read_text(encoding="utf-8")))
+
+
 def lists() -> dict[str, list[str]]:
-    """words.toml's lists, validated."""
-    return WordLists.model_validate(tomllib.loads(PATH.read_text(encoding="utf-8"))).lists
+    return word_lists().lists
+
+
+@lru_cache(maxsize=1)
+def questions() -> tuple[tuple[Phrases, str, str], ...]:
+    """The questions words.toml answers: (their phrases, any case; the answer; what it is about)."""
+    return tuple((Phrases(q.keys, ignore_case=True), q.answer, q.about) for q in word_lists().question)
 
 
 @lru_cache(maxsize=None)
