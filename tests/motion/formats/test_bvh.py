@@ -266,8 +266,10 @@ def test_mixamo_names_map_the_smpl_joints(real_clips):
     for j, p in enumerate(sk.PARENTS):
         if p >= 0:
             assert bvh.parents[bvh.index(MIXAMO_NAMES[j])] == bvh.index(MIXAMO_NAMES[p])
+    # The same joints (on Mixamo's rest axes the channels are other angles, each rounded to
+    # 1e-4°: a few µm down a limb).
     np.testing.assert_allclose(smpl22_positions(bvh), smpl22_positions(read_bvh(write_bvh(real_clips["walk"][:5]))),
-                               atol=2e-6)
+                               atol=1e-5)
 
 
 def test_z_up_stands_on_z_and_faces_minus_y(real_clips):

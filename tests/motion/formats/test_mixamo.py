@@ -106,3 +106,33 @@ def test_bones_rest_along_their_y_axis_and_a_mixamo_armature_follows_by_name():
     got = np.stack([pos[n.name] for n in nodes[:sk.NUM_JOINTS]], axis=1)
     assert got.shape == (t, sk.NUM_JOINTS, 3)
     assert np.abs(got - rig_positions(rigs_of(people)[0])).max() < 1e-4
+
+
+def test_the_bvh_rests_on_mixamos_axes_too(tmp_path):
+    """The Mixamo BVH has the GLB's rest axes (issue 27): each joint's OFFSET lies along its
+    parent's local +Y (the pelvis's to spine1, spine3's to the neck, the leaves' End Sites
+    along their own), and a reader nobody here wrote (bvhio) gives the motion's joints back
+    within 1 mm, Y up and Z up; the SMPL-named file keeps world-aligned axes."""
+    from interplay.motion.formats.bvh import MIXAMO_NAMES, Z_UP, smpl22_positions
+    from tests.helpers.bvh_readers import bvhio_positions
+    people = fixture_people("spam_wave")
+    joints = people[0][:30]
+    for up in ("y", "z"):
+        path = tmp_path / f"{up}.bvh"
+        path.write_text(write_bvh(joints, names="mixamo", up=up))
+        bvh = read_bvh(path)
+        main = (sk.JOINT_INDEX["spine1"], sk.NECK)                 # the parents' bones' ends
+        for j in range(1, sk.NUM_JOINTS):
+            if j in main or len(sk.children(sk.PARENTS[j])) == 1:
+                off = bvh.offsets[bvh.index(MIXAMO_NAMES[j])]
+                assert off[1] / np.linalg.norm(off) > 0.999, MIXAMO_NAMES[j]
+        for leaf, end in bvh.end_sites:
+            assert end[1] / np.linalg.norm(end) > 0.999, bvh.names[leaf]
+        got, _, _ = bvhio_positions(path, MIXAMO_NAMES)
+        if up == "z":
+            got = got @ Z_UP
+        plain = read_bvh(write_bvh(joints, up="y"))
+        assert np.abs(got - smpl22_positions(plain)).max() < 1e-3
+    smpl = read_bvh(write_bvh(joints))
+    knee = smpl.offsets[smpl.index("left_knee")]
+    assert knee[1] < 0                                        # world-aligned: the thigh hangs down

@@ -33,9 +33,11 @@ from interplay.motion.formats.presets import (
     MIXAMO_NAMES,
     MIXAMO_PREFIX,
     UNITS,
+    bone_axes,
     check_fps_units_names,
     export_rigs,
     joint_names,
+    on_bone_axes,
 )
 from interplay.motion.formats.presets import (
     NAMINGS as NAMINGS,
@@ -377,7 +379,8 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
     not given), the rig of `presets.export_rigs` (floor: the ground no hand, knee or foot
     goes under, for two people the shared one). Presets: out_fps (default fps; resampled over
     the same duration keeping the last pose, root linearly, rotations by slerp), units "m" or
-    "cm", up "y" or "z", names "smpl" or "mixamo". Re-reading reproduces joints that lie on
+    "cm", up "y" or "z", names "smpl" or "mixamo" (with Mixamo's rest axes: every OFFSET along
+    its parent's local Y, `presets.on_bone_axes`). Re-reading reproduces joints that lie on
     those bone lengths, in those units and axes, up to the floor pass's lift of the root.
     leaves: explicit head / wrist rotations (`Motion.leaves_of`), in place of the derived."""
     joints = np.asarray(joints, dtype=np.float64)
@@ -396,7 +399,13 @@ def write_bvh(joints: np.ndarray, fps: float = sk.FPS, offsets: np.ndarray | Non
     (rig,) = export_rigs([joints], fps, rate, [offsets], floor, body="joints", leaves=[leaves])
     local, root, offs = rig.matrices(), rig.root, rig.offsets
     ends = end_sites(offs)
-    if up == "z":
+    if names == "mixamo":
+        # Mixamo's rest axes, as the GLB's: every frame is its bone's, so Z up turns the root only.
+        local, offs, ends = on_bone_axes(local, offs, ends, bone_axes(offs, ends))
+        if up == "z":
+            local[:, sk.PELVIS] = Z_UP @ local[:, sk.PELVIS]
+            root = root @ Z_UP.T
+    elif up == "z":
         local = Z_UP @ local @ Z_UP.T
         root, offs = root @ Z_UP.T, offs @ Z_UP.T
         ends = {j: Z_UP @ e for j, e in ends.items()}

@@ -3,7 +3,7 @@ one way both turn a person's joints into the rig they write.
 
     rigs = export_rigs(people, fps=20, out_fps=30)   # solved, off the floor, resampled
     joint_names("mixamo")                             # ("mixamorig:Hips", …)
-    bone_axes(offsets)                                # Mixamo-style rest axes (GLB)
+    bone_axes(offsets, ends)                          # Mixamo-style rest axes (GLB, BVH)
 
 Frame rates: the motion's duration at the new rate with the last pose kept
 (`resample_rig`: ceil(duration * fps) + 1 frames). Units: metres or centimetres. Names:
@@ -138,3 +138,18 @@ def bone_axes(offsets: np.ndarray, ends: dict[int, np.ndarray]) -> np.ndarray:
         z /= np.linalg.norm(z)
         out[j] = np.stack([np.cross(y, z), y, z], axis=1)
     return out
+
+
+def on_bone_axes(local: np.ndarray, offsets: np.ndarray, ends: dict[int, np.ndarray],
+                 bind: np.ndarray) -> tuple[np.ndarray, np.ndarray, dict[int, np.ndarray]]:
+    """A rig written on rest axes `bind` (22, 3, 3, world; `bone_axes`) in a format with no
+    rest rotations (BVH): each joint's frame is its bind frame, so its channels turn
+    parent_bind^T · local · bind (the root: local · bind) and its OFFSET (and End Site) lies
+    in its parent's (its own) bind frame: bind_parent^T · offset. Forward kinematics of the
+    result gives the same positions; at zero rotations the figure is not a T-pose but every
+    bone runs along its parent's local Y, as in Mixamo's rigs. local (T, 22, 3, 3), offsets
+    (22, 3), ends {leaf: (3,)} → the same, on the axes."""
+    parent = np.stack([np.eye(3) if p < 0 else bind[p] for p in sk.PARENTS])
+    out = np.swapaxes(parent, -1, -2)[None] @ local @ bind[None]
+    offs = np.einsum("jki,jk->ji", parent, offsets)
+    return out, offs, {j: bind[j].T @ e for j, e in ends.items()}
