@@ -21,7 +21,6 @@ cannot run that kind (e.g. part edits without SPAM)."""
 
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 from typing import Any, Callable
 
@@ -32,7 +31,7 @@ from interplay.motion.captions import PARTS, summarise
 from interplay.motion.posecodes import caption_clip
 from interplay.planner.schema import Segment
 from interplay.review import asked as asked_checks
-from interplay.review.agreement import BODY_CUES, confirms
+from interplay.review.agreement import BODY_CUES, confirms, cued
 from interplay.review.checks import Checks, commonsense, worse
 from interplay.review.evaluator import Evaluator
 from interplay.review.judge import WORDS, judge, not_covered
@@ -116,7 +115,7 @@ def review(seg: Segment, joints, evaluator: Evaluator | None = None,
     body_ok, bodies = None, [t for c, _ in captioned for t in c["body"]]
     # The body caption may show the base ("stands") or the whole step ("kicks"): either counts.
     for text in dict.fromkeys((base, seg.prompt)):
-        if any(re.search(p, text.lower()) for p, _ in BODY_CUES):
+        if cued(text, BODY_CUES):
             body_ok = body_ok or confirms(text, bodies, BODY_CUES)[0]
     checks: Checks = commonsense(people, seg.prompt)
     missed = asked_checks.missed(people, asked)
