@@ -115,8 +115,9 @@ def activity(base: np.ndarray, count: int, hands: str = "right", at: str = "ches
     moving = ([side or hands] if one else ["left", "right"])
     for s in moving:
         shift = 0.5 if hands == "alternate" and s == "left" else 0.0
-        wave = inside * np.sin(2 * np.pi * (ph + shift))
-        wave90 = inside * (np.cos(2 * np.pi * (ph + shift)) - 1.0)
+        # each wave 0 where the strokes start and end (the other hand half a turn on)
+        wave = inside * (np.sin(2 * np.pi * (ph + shift)) - np.sin(2 * np.pi * shift))
+        wave90 = inside * (np.cos(2 * np.pi * (ph + shift)) - np.cos(2 * np.pi * shift))
         if at == "low" and s == moving[0]:
             j = _bend_to(j, s, _anchor(j, at, s, reach_m, together), env)
         goal = _anchor(j, at, s, reach_m, together) + _stroke(j, axis, amplitude_m, wave, wave90)
