@@ -278,6 +278,7 @@ PATH_DISTANCE = re.compile(rf"\b{_PATH_NUMBER}\s*-?\s*(m|metres?|meters?|steps?|
                        r"to\s+the\s+right|left|right|sideways))?")
 PATH_SIZE = re.compile(rf"\b(?:(?:radius|diameter)\s+(?:of\s+)?)?{_PATH_NUMBER}\s*-?\s*(?:m|metres?|meters?)\b"
                    r"(?:\s*(?:wide|across|diameter|radius|sides?|sided|big|large)\b)?")
+PATH_TURNS = re.compile(r"\b(\d+(?:\.\d+)?|one|two|three|four|five)\s+(?:times|turns|loops|laps|circles)\b")
 PATH_CLOCK = re.compile(r"\b(?:turns?|turning|turned|heads?|goes|walks|runs)?\s*(left|right)?\s*"
                     r"(?:at|to|towards?|toward)\s+(\d{1,2}|one|two|three|four|five|six|seven|eight|"
                     r"nine|ten|eleven|twelve)\s*o'?\s*clock\b")

@@ -15,7 +15,6 @@ distances as explicit trajectories.
 from __future__ import annotations
 
 import math
-import re
 from typing import Literal, cast
 
 from interplay.catalogue import grammar as g
@@ -37,36 +36,22 @@ _UNIT = {"m": 1.0, "metre": 1.0, "meter": 1.0, "metres": 1.0, "meters": 1.0, "st
          "yards": 0.9144, "pace": 0.7, "paces": 0.7}
 _CLOCK_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
                 "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
-_SHAPES = [  # (pattern, shape); first match wins
-    (r"\bfigure[\s-]*(?:of\s+)?(?:eight|8)\b", "figure_eight"),
-    (r"\bzig[\s-]?zag", "zigzag"),
-    (r"\b(?:s[\s-]?(?:shape|shaped|curve|path|line)|shape\s+of\s+(?:an?\s+|the\s+letter\s+)?s\b|"
-     r"letter\s+s\b|serpentine|snake\s+path|winding)", "s_curve"),
-    (r"\bheart(?:[\s-]shaped)?\b", "heart"),
-    (r"\bspiral", "spiral"),
-    (r"\bsquare\b|\brectangle\b", "square"),
-    (r"\b(?:semi[\s-]?circle|half[\s-]circle|arc|curve)\b", "arc"),
-    (r"\bcircles?\b|\bcircular\b|\bround\s+in\s+a\s+loop\b|\bloop\b", "circle"),
-    (r"\bstraight\s+line\b|\bin\s+a\s+line\b|\bstraight\s+(?:ahead|forward)\b", "line"),
-    (r"\b(?:around\s+the\s+room|wanders?|wandering|aimlessly|randomly|around\s+freely)\b", "free"),
-]
-_SIDE = r"\b(?:(?:sideways\s+)?(?:to|towards)\s+(?:the|his|her|their)\s+{0}|{0}wards?)\b"
-_DIRECTION = [(r"\bback(?:ward)?s?\b(?!\s+up)|\bin\s+reverse\b", "backward"),
-              (_SIDE.format("left"), "left"), (_SIDE.format("right"), "right")]
+# (shape, the words.toml list that says it); first said wins
+_SHAPES = [("figure_eight", "path_figure_eight"), ("zigzag", "path_zigzag"), ("s_curve", "path_s_curve"),
+           ("heart", "path_heart"), ("spiral", "path_spiral"), ("square", "path_square"), ("arc", "path_arc"),
+           ("circle", "path_circle"), ("line", "path_line"), ("free", "path_free")]
+_DIRECTION = [("backward", "path_backward"), ("left", "path_left"), ("right", "path_right")]
 DEFAULT_LINE = 4.0    # metres of a sideways/backwards walk with no distance given
 _HEADING = {"forward": (0.0, 1.0), "backward": (0.0, -1.0), "left": (1.0, 0.0), "right": (-1.0, 0.0)}
 
 
 def _number(word: str) -> float:
-    word = re.sub(r"\s+", " ", word)
-    return float(word) if re.match(r"^\d", word) else float(_NUM[word])
+    word = " ".join(word.split())                  # "half  a": a number's words, no spaces around
+    return float(word) if word[:1].isdecimal() else float(_NUM[word])
 
 
 def _direction(text: str) -> str | None:
-    for rx, name in _DIRECTION:
-        if re.search(rx, text):
-            return name
-    return None
+    return next((name for name, said in _DIRECTION if words(said).search(text)), None)
 
 
 def parse(text: str) -> TrajectorySpec | None:
@@ -86,8 +71,8 @@ def parse(text: str) -> TrajectorySpec | None:
                              "distance_m": distance_m})
     travel = words("travel_words").search(t) is not None or words("path_words").search(t)
     # Shapes only count for travel: "swings the arm in circles" is not a path.
-    shape = next((s for rx, s in _SHAPES if re.search(rx, t)), None) if travel else None
-    dist = g.PATH_DISTANCE.search(re.sub(r"\bon\s+(?:one|the\s+\w+|a)\s+foot\b", "", t)) if travel else None
+    shape = next((s for s, said in _SHAPES if words(said).search(t)), None) if travel else None
+    dist = g.PATH_DISTANCE.search(words("path_on_foot").cut(t, "")) if travel else None
     distance = _number(dist.group(1)) * _UNIT[dist.group(2)] if dist else None
     direction = _direction(dist.group(3) or "") if dist and dist.group(3) else None
     if shape is None and direction is None and travel:
@@ -98,21 +83,19 @@ def parse(text: str) -> TrajectorySpec | None:
         return None
     spec: dict = {"shape": shape, "text": text.strip()}
     if shape in ("circle", "arc", "spiral", "figure_eight", "square", "heart"):
-        if re.search(r"\b(?:counter[\s-]?clockwise|anti[\s-]?clockwise)\b", t):
-            spec["clockwise"] = False
-        elif re.search(r"\bclockwise\b", t):
-            spec["clockwise"] = True
-        elif re.search(r"\bto\s+the\s+right\b|\bturning\s+right\b", t):
-            spec["clockwise"] = True
-        elif re.search(r"\bto\s+the\s+left\b|\bturning\s+left\b", t):
-            spec["clockwise"] = False
+        turning = next((c for c, w in ((False, "path_counterclockwise"), (True, "path_clockwise"),
+                                       (True, "path_turning_right"), (False, "path_turning_left"))
+                        if words(w).search(t)), None)
+        if turning is not None:
+            spec["clockwise"] = turning
         size = g.PATH_SIZE.search(t)
-        if size and (not dist or re.search(r"wide|across|diameter|radius|side|big|large", size.group(0))
-                     or re.match(r"\s*(?:circle|square|heart|spiral|figure|arc|semi)", t[size.end():])):
+        sized = size.group(0) if size else ""
+        if size and (not dist or any(w in sized for w in ("wide", "across", "diameter", "radius", "side", "big", "large"))
+                     or t[size.end():].lstrip().startswith(("circle", "square", "heart", "spiral", "figure", "arc",
+                                                             "semi"))):
             spec["size_m"] = _number(size.group(1)) * (2.0 if "radius" in size.group(0) else 1.0)
             distance = None                      # "a 3 m circle": its size, not the path length
-        turns = re.search(r"\b(\d+(?:\.\d+)?|one|two|three|four|five)\s+"
-                          r"(?:times|turns|loops|laps|circles)\b", t)
+        turns = g.PATH_TURNS.search(t)
         if turns and shape in ("circle", "spiral"):
             spec["turns"] = _number(turns.group(1))
         elif shape == "arc":
