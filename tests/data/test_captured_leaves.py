@@ -19,8 +19,10 @@ from interplay.motion.rig import global_rotations, rig_positions, solve_rig
 from interplay.motion.rotations import quat_to_matrix
 
 RAW = Path(__file__).resolve().parents[1] / "fixtures" / "raw"
-# The skeletons (clip.meta["skeleton"]) whose files carry a head and hands (`data/leaves.py`).
-CARRIED_SKELETONS = ("cmu-daz", "bandai-namco")
+def carried(clip) -> bool:
+    """Whether the library carries a clip's heads and hands (`data/leaves.py`): cmu-bvh's
+    Daz-named files, salsa, Bandai Namco, HDM05."""
+    return clip.source in ("cmu-salsa", "bandai-namco", "hdm05") or clip.meta.get("skeleton") == "cmu-daz"
 J = sk.JOINT_INDEX
 
 
@@ -29,56 +31,56 @@ def built(tmp_path_factory):
     out = tmp_path_factory.mktemp("data")
     build.SKIPPED.clear()
     assert build.main(["--source", str(RAW), "--out", str(out), "--only", "cmu-bvh", "cmu-salsa",
-                       "bandai-namco"]) == 0
+                       "bandai-namco", "hdm05"]) == 0
     return out, load_clips(out)
 
 
 def test_the_build_writes_side_files_that_fit_its_clips(built):
     out, clips = built
-    sources = {"cmu-bvh", "cmu-salsa", "bandai-namco"}
+    n = 0
+    sources = {"cmu-bvh", "cmu-salsa", "bandai-namco", "hdm05"}
     assert {p.stem for p in (out / "leaves").glob("*.npz")} == sources
     # The positions' own files are the sources' alone (the side files sit in a folder).
     assert {p.stem for p in out.glob("*.npz")} == sources
-    carried = 0
     for clip in clips:
         for k, joints in enumerate(clip.people):
             world = captured_world(clip.id, k, len(joints), data_dir=out)
-            assert bool(world) == (clip.meta.get("skeleton") in CARRIED_SKELETONS), clip.id
+            assert bool(world) == carried(clip), clip.id
             if world:
-                carried += 1
+                n += 1
                 q = np.stack([world[leaf] for leaf in LEAF_NAMES], axis=1)
                 a = agreement(np.asarray(joints, np.float64), q)
-                assert a["head"] < 45.0 and max(a["left_wrist"], a["right_wrist"]) < 80.0, (clip.id, a)
-    assert carried >= 3
+                assert max(a["left_wrist"], a["right_wrist"]) < 80.0, (clip.id, a)
+    assert n >= 4
     # A library built otherwise (other frames) gets no leaves rather than misplaced ones.
     clip = next(c for c in clips if captured_world(c.id, 0, data_dir=out))
     assert captured_world(clip.id, 0, clip.frames + 1, data_dir=out) == {}
 
 
-def test_the_library_carries_every_daz_and_bandai_person():
-    """The shipped side files: every cmu-bvh person of the Daz family, both salsa dancers and
-    every Bandai Namco clip (675 people, 86,239 frames), frame for frame, lined up with the
-    library's forearms and neck → head bones: per source the median person's hands within
-    20° and head within 20° (measured 4–20°); per person the head within 45° (walking on
-    uneven terrain, 03_01 looks down: 39°) and the hands within 80° (Bandai's feminine and
-    happy bye-byes hold the hands bent 60–74°); a yaw 90° off puts the hands 60–70° off in
-    every clip."""
-    want = carried = 0
+def test_the_library_carries_every_person_of_the_carried_sources():
+    """The shipped side files: every cmu-bvh person of the Daz family, both salsa dancers,
+    every Bandai Namco and HDM05 clip (962 people, 98,204 frames), frame for frame, lined
+    up with the library's joints: per source, the median person's face within 20° of the
+    body's facing (measured 5–16°; a yaw 90° off: ~90°) and hands within 30° of their
+    forearms (measured 9–25°, HDM05's hands the most bent); per person, hands within 80°
+    (Bandai's feminine and happy bye-byes hold the hands bent 60–74°)."""
+    want = n = 0
     medians: dict[str, list[dict[str, float]]] = {}
     for clip in default_clips():
         for k, joints in enumerate(clip.people):
-            want += clip.meta.get("skeleton") in CARRIED_SKELETONS
+            want += carried(clip)
             world = captured_world(clip.id, k, len(joints))
             if world:
-                carried += 1
+                n += 1
                 q = np.stack([world[leaf] for leaf in LEAF_NAMES], axis=1)
                 a = agreement(np.asarray(joints, np.float64), q)
-                assert a["head"] < 45.0 and max(a["left_wrist"], a["right_wrist"]) < 80.0, (clip.id, a)
+                assert max(a["left_wrist"], a["right_wrist"]) < 80.0, (clip.id, a)
                 medians.setdefault(clip.source, []).append(a)
-    assert carried == want >= 670
+    assert n == want >= 960
     for source, rows in medians.items():
-        for leaf in LEAF_NAMES:
-            assert np.median([r[leaf] for r in rows]) < 20.0, (source, leaf)
+        assert np.median([r["head"] for r in rows]) < 20.0, source
+        for leaf in LEAF_NAMES[1:]:
+            assert np.median([r[leaf] for r in rows]) < 30.0, (source, leaf)
 
 
 def _salsa():
