@@ -25,7 +25,7 @@ import numpy as np
 
 from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
-from interplay.generators.interaction import contest, gestures, partners, touches, travel
+from interplay.generators.interaction import contest, gestures, partners, piggyback, touches, travel
 from interplay.generators.interaction.bodies import SHARED
 from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, read_script, why_not
 from interplay.generators.interaction.library import Library
@@ -49,6 +49,7 @@ BUILDERS = {
     "one_stops": travel.one_stops, "side_by_side": travel.side_by_side, "approach": travel.approach,
     "together": gestures.together, "help_up": partners.help_up, "spar": contest.spar,
     "hand_over": partners.hand_over, "touch": partners.touch, "chase": contest.chase,
+    "carry": piggyback.piggyback, "lead": travel.lead,
 }
 START = {"help_up": "any"}     # the one helped up starts on the floor
 FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)

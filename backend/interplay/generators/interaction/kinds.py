@@ -23,8 +23,9 @@ from interplay.catalogue.load import catalogue, on_change
 # The kinds, in a fixed order (a scene's random draws are seeded by the kind's place here).
 KINDS = ("handshake", "high_five", "hug", "push", "wave", "wave_back", "bow", "mirror",
          "follow", "one_stops", "side_by_side", "approach", "together", "help_up", "spar",
-         "hand_over", "touch", "chase")
-CONTACT = ("handshake", "high_five", "hug", "push", "help_up", "hand_over", "touch")  # they touch
+         "hand_over", "touch", "chase", "carry", "lead")
+CONTACT = ("handshake", "high_five", "hug", "push", "help_up", "hand_over", "touch", "carry",
+           "lead")  # they touch
 APPROACHABLE = ("handshake", "high_five", "hug", "approach")
 
 # Words that look like a kind's but are not it ("push-ups"), taken out before the kinds' words.
@@ -50,7 +51,8 @@ _ACTOR = {"push": ("push*", "shov*"), "wave_back": ("wav*",), "follow": ("lead*"
           "one_stops": ("stop*", "halt*", "stand still", "stands still"),
           "help_up": ("help*", "pull*", "reach*", "lend*"), "hand_over": ("hand*", "give*", "gave", "pass*", "offer*"),
           "touch": ("tap", "taps", "pat", "pats", "touches", "grab*", "pok*", "nudg*"),
-          "chase": ("chases", "chasing", "pursu*", "run* after", "catch*")}
+          "chase": ("chases", "chasing", "pursu*", "run* after", "catch*"),
+          "carry": ("carry", "carries", "carrying", "carried", "giv*", "lift*", "let*"), "lead": ("lead*", "pull*", "tow*", "guid*")}
 _RESPONDER = {"push": ("stumbl*", "pushed", "fall*", "stagger*", "knock*"), "wave_back": ("wav* back", "return*"),
               "follow": ("follow*", "behind"),
               "one_stops": ("keep walking", "keeps walking", "keep on walking", "keeps on walking", "continues"),
@@ -58,17 +60,20 @@ _RESPONDER = {"push": ("stumbl*", "pushed", "fall*", "stagger*", "knock*"), "wav
               "help_up": ("get* up", "gets up", "rise*", "lying", "fallen", "on the floor", "stand* up"),
               "hand_over": ("receiv*", "take*", "took", "accept*"),
               "touch": ("is tapped", "tapped", "patted", "touched", "grabbed", "turns around"),
-              "chase": ("flee*", "run* away", "escap*", "is chased", "chased", "runs from")}
+              "chase": ("flee*", "run* away", "escap*", "is chased", "chased", "runs from"),
+              "carry": ("ride", "rides", "riding", "rode", "is carried", "climb*", "hop* on", "get* on", "gets a"),
+              "lead": ("is led", "led by", "follow*", "trail*", "is pulled", "is guided")}
 _VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_stops": "stops",
          "mirror": "leads (the other mirrors)", "help_up": "helps", "hand_over": "hands it over",
-         "touch": "touches", "chase": "chases", "spar": "strikes first"}
+         "touch": "touches", "chase": "chases", "spar": "strikes first", "carry": "carries",
+         "lead": "leads"}
 # Prompts whose first-named person is the one who responds ("one person follows the other").
 _FIRST = ("one", "a", "the first")
 _FIRST_RESPONDS = {"follow": ("follow", "follows", "trail", "trails"),
                    "mirror": ("copy", "copies", "mirror", "mirrors", "imitate", "imitates", "mimic", "mimics")}
 # Kinds whose prompt may name the response first ("the man runs away while the woman chases
 # him", "she takes a cup from him"): the first-named person is then the one who responds.
-_RESPONSE_FIRST = ("help_up", "hand_over", "touch", "chase")
+_RESPONSE_FIRST = ("help_up", "hand_over", "touch", "chase", "carry", "lead")
 # A touched part's words ("on the shoulder", "her arm"), for the parts of the touch entry.
 _PART_WORDS = {"shoulder": ("shoulder*",), "back": ("back",), "arm": ("arm", "arms", "elbow*", "wrist*", "forearm*"),
                "head": ("head", "hair", "forehead", "cheek"), "hand": ("hand", "hands", "palm")}

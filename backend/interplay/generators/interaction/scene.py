@@ -17,6 +17,7 @@ from interplay.generators.interaction.bodies import ground, refit
 from interplay.generators.interaction.kinds import Script
 from interplay.generators.interaction.library import Library
 from interplay.motion import skeleton as sk
+from interplay.motion.checks.contact import riding
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.pair.placement import BODY_MARGIN, body_gap
 from interplay.motion.rotations import yaw_matrix
@@ -76,8 +77,16 @@ def clear(a: np.ndarray, b: np.ndarray, margin: float = BODY_MARGIN) -> tuple[np
 def finish(people: list[np.ndarray]) -> list[np.ndarray]:
     """Both on the shared bones and the floor; the first person's pelvis at the origin on
     frame 0, facing +Z there (or, when they travel more than a metre, travelling along +Z),
-    one transform for both."""
-    people = [ground(refit(p)) for p in people]
+    one transform for both. A person riding on the other's back (`contact.riding`) is not
+    set on the floor but moved up or down with the one who carries them."""
+    fitted = [refit(p) for p in people]
+    grounded = [ground(p) for p in fitted]
+    if len(people) == 2:
+        for rider in (0, 1):
+            if riding(fitted[rider], fitted[1 - rider]).mean() > 0.3:
+                carrier = 1 - rider
+                grounded[rider] = fitted[rider] + (grounded[carrier] - fitted[carrier])[:1, :1]
+    people = grounded
     travel = (people[0][-1, sk.PELVIS] - people[0][0, sk.PELVIS])[[0, 2]]
     if float(np.linalg.norm(travel)) > 1.0:
         yaw = -float(np.arctan2(travel[0], travel[1]))

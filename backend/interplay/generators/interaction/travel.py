@@ -113,3 +113,33 @@ def approach(c: Cast) -> list[np.ndarray]:
     c.report["placement"] = {"end_distance_m": round(end + moved, 3),
                              "start_distance_m": round(float(np.linalg.norm((b[0, sk.PELVIS] - a[0, sk.PELVIS])[[0, 2]])), 3)}
     return [a, b]
+
+
+LEAD_BEHIND_M = (0.45, 0.55)   # leading by the hand: the led one this far behind the leader …
+LEAD_SIDE_M = (0.28, 0.34)     # … and this far to the side, so their near hands meet between
+
+
+def lead(c: Cast) -> list[np.ndarray]:
+    """Person `actor` leads the other by the hand: both walk from standing at the same pace,
+    the led one half a step behind and to one side, the leader's near hand reaching back and
+    the other's forward, held between them from the first frame to the last (two-bone IK)."""
+    frames, rng = c.frames, c.rng
+    lead_, led = c.script.actor, 1 - c.script.actor
+    go = _go(c)
+    wl, sl, stand_l = _walker(c, lead_)
+    wf, sf, stand_f = _walker(c, led, pace_of=mv.speed(wl))
+    jl, rl = mv.locomote(wl, stand_l, frames, mv.Gait(go=go, scale=sl))
+    jf, rf = mv.locomote(wf, stand_f, frames, mv.Gait(go=go + int(round(rng.uniform(0.05, 0.15) * FPS)), scale=sf))
+    side = 1.0 if rng.random() < 0.5 else -1.0             # the led one on the leader's left (+X) or right
+    behind, across = float(rng.uniform(*LEAD_BEHIND_M)), float(rng.uniform(*LEAD_SIDE_M))
+    jl = turn_to(jl, 0.0, np.zeros(2), current=0.0)
+    jf = turn_to(jf, 0.0, np.array([side * across, -behind]), current=0.0)
+    jf, moved = clear(jl, jf)
+    jl, jf = ct.held_hands(jl, jf, np.ones(frames), side, float(rng.uniform(-0.12, -0.06)))
+    gap = ct.hand_gap(jl, jf, *(("left", "right") if side > 0 else ("right", "left")))
+    if float((gap > 0.03).mean()) > 0.1:
+        raise ValueError("the two hands do not reach each other while they walk")
+    c.report["walks"] = [rl, rf] if lead_ == 0 else [rf, rl]
+    c.report["contact"] = {"kind": "hands_held", "contact": [0, frames], "leader": lead_,
+                           "behind_m": round(behind, 3), "side_m": round(across + moved, 3)}
+    return [jl, jf] if lead_ == 0 else [jf, jl]

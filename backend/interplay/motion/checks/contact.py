@@ -100,17 +100,23 @@ def separate(a, b, fa, fb, min_m: float = 1.0):
     return got >= min_m, round(got, 2), f"≥ {min_m} m further apart"
 
 
+def riding(rider: np.ndarray, carrier: np.ndarray) -> np.ndarray:
+    """(T,) bool: `rider` is up on `carrier` (feet ≥ 25 cm off the floor, pelvis within 45 cm
+    of the carrier's and ≥ 5 cm over it), short gaps filled."""
+    # Off the carrier's floor (its lowest joint: the toe on the ground), not the rider's
+    # own: a body frame's floor follows the lowest joint, which a rider's feet are.
+    feet = rider[:, list(sk.FOOT_JOINTS), 1].min(axis=1) - carrier[..., 1].min(axis=1)
+    near = np.linalg.norm(rider[:, sk.PELVIS][:, [0, 2]] - carrier[:, sk.PELVIS][:, [0, 2]],
+                          axis=1) <= RIDE_NEAR_M
+    above = rider[:, sk.PELVIS, 1] - carrier[:, sk.PELVIS, 1] >= RIDE_ABOVE_M
+    return fill_gaps((feet >= RIDE_FEET_M) & near & above)
+
+
 def carried(a, b, fa, fb, min_s: float = 1.0):
     """One is carried by the other (a piggyback, a lift): feet ≥ 25 cm off the floor, pelvis close to and over the carrier's, for ≥ `min_s` s."""
     best = 0.0
     for rider, carrier in ((a, b), (b, a)):
-        # Off the carrier's floor (its lowest joint: the toe on the ground), not the rider's
-        # own: a body frame's floor follows the lowest joint, which a rider's feet are.
-        feet = rider[:, list(sk.FOOT_JOINTS), 1].min(axis=1) - carrier[..., 1].min(axis=1)
-        near = np.linalg.norm(rider[:, sk.PELVIS][:, [0, 2]] - carrier[:, sk.PELVIS][:, [0, 2]],
-                              axis=1) <= RIDE_NEAR_M
-        above = rider[:, sk.PELVIS, 1] - carrier[:, sk.PELVIS, 1] >= RIDE_ABOVE_M
-        up = fill_gaps((feet >= RIDE_FEET_M) & near & above)
+        up = riding(rider, carrier)
         best = max(best, max((e - s for s, e in runs(up)), default=0) / FPS)
     return best >= min_s, round(best, 2), f"feet ≥ {RIDE_FEET_M} m up over the carrier ≥ {min_s} s"
 

@@ -24,6 +24,7 @@ from interplay.motion import skeleton as sk
 from interplay.motion.bodyframe import BodyFrame
 from interplay.motion.checks import contact, everyday, heads
 from interplay.motion.checks import measures as m
+from interplay.motion.checks.contact import riding as _riding
 from interplay.motion.signals import fill_gaps, runs, zigzag
 
 FPS = sk.FPS
@@ -770,12 +771,21 @@ PLAUSIBILITY = ("no_pops", "grounded", "starts_standing", "no_interpenetration")
 def plausibility(people: list[np.ndarray], start: str = "standing", contact: bool = False) -> list[Result]:
     """The checks every output gets: no pelvis pops, grounded, the first frame standing (when
     `start` is "standing"; otherwise in that posture, "any" skips it) and, for two people, no
-    interpenetration (with the arms that are asked to touch left out when `contact`)."""
+    interpenetration (with the arms that are asked to touch left out when `contact`). A
+    person carried on the other's back (`contact.riding`) is held up by them: their feet
+    off the floor there are not floating, so `grounded` judges only their other frames."""
     people = [np.asarray(p, dtype=np.float64) for p in people]
     frames_ = [m.frame_of(p) for p in people]
     out = []
     for i, (p, f) in enumerate(zip(people, frames_)):
         for name, fn in (("no_pops", no_pops), ("grounded", grounded)):
+            if name == "grounded" and len(people) == 2:
+                up = _riding(p, people[1 - i])
+                if up.any():
+                    rest = p[~up]
+                    ok, v, bound = fn(rest, m.frame_of(rest)) if len(rest) >= 3 else (True, {}, "carried")
+                    out.append(Result(name, ok, v, bound, i))
+                    continue
             ok, v, bound = fn(p, f)
             out.append(Result(name, ok, v, bound, i))
         if start != "any":
