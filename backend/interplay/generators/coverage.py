@@ -36,7 +36,11 @@ def cover(plan: GenerationPlan, index: RetrievalIndex | None = None) -> None:
     """Set every segment's coverage from the plan as made; nearest segments get a reason."""
     for seg in plan.segments:
         cov = seg.coverage or Coverage(how="capture", similarity=1.0)
-        if plan.generator == "compose" and plan.composition and cov.how != "nearest":
+        # A composed scene covers the segment whatever the planner read in its words (the
+        # kind was found by its entry's words or descriptions), except "together", which plays
+        # each person's own part through the one-person generator.
+        kind = (plan.composition or {}).get("kind")
+        if plan.generator == "compose" and kind and (cov.how != "nearest" or kind != "together"):
             cov = cov.model_copy(update={"how": "composed", "entry": plan.composition.get("kind")})
         best = _best_piece(seg)
         if best is not None and cov.how in ("nearest", "capture") and cov.entry is None:
