@@ -218,9 +218,10 @@ def register(sub) -> None:
     p = sub.add_parser("eval-prompts", help="pass rates of every generator on a suite of prompts "
                        "as users type them, checked on the motion itself (per category, 95%% CI "
                        "over seeds)")
-    p.add_argument("--split", choices=("dev", "test", "fresh"), default="test",
+    p.add_argument("--split", choices=SUITE_SPLITS, default="test",
                    help="dev: tune there; test: the benchmark (default); fresh: prompts in "
-                   "words the code has no table for, part edits among them")
+                   "words the code has no table for, part edits among them; fresh2: everyday "
+                   "prompts written blind (without seeing the studio's vocabulary)")
     p.add_argument("--rows", help="comma-separated: retrieval,spam,coda,default (default all; "
                    "rows whose weights are missing are skipped)")
     p.add_argument("--seeds", type=int, default=3, help="seeds per prompt (default 3)")

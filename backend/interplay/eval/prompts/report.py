@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from interplay.eval.prompts.rows import Row, edited
-from interplay.eval.prompts.suite import CATEGORIES, FRESH_CATEGORIES, Prompt, table_categories
+from interplay.eval.prompts.suite import Prompt, category_labels, table_categories
 from interplay.generators.base import Request
 from interplay.motion.checks.named import plausibility, run_check
 from interplay.motion.motion import Motion
@@ -170,7 +170,7 @@ def format_table(report: dict, markdown: bool = False) -> str:
             f"({report['one_person_prompts']} one-person, {report['two_person_prompts']} two-person) "
             f"· seeds {report['seeds']} · share of checks passed, mean ± 95 % CI over seeds"]
     cols = ["category", "prompts"] + names
-    labels = {**CATEGORIES, **FRESH_CATEGORIES}
+    labels = category_labels(report.get("split"))
     lines = [[labels[cat], str(count)] + [_cell(t[n].get(cat)) for n in names]
              for cat, count in report["categories"].items()]
     lines += [[label, ""] + [_cell(t[n][key], kind) for n in names] for key, label, kind in SUMMARY]

@@ -10,6 +10,11 @@ prompts written in words the code has no table for (`vocabulary.py`), one-person
 and part edits. A part edit's entry has `"edit": {"part": …, "text": …}`: the prompt is the
 base motion, the text is what the user types into the studio's edit of that part, and its
 checks may compare the edited motion with the base (`Spec.base`).
+
+The `fresh2` split (`eval/data/fresh2_prompts.json`, `load_split("fresh2")`): everyday prompts
+(category "everyday", one person; "two_person") written blind, by someone who read only the
+check functions (`motion/checks`), never the studio's vocabulary, catalogue, planner,
+generators, the other prompt files or any output, so it measures how the studio generalises.
 """
 
 from __future__ import annotations
@@ -22,7 +27,10 @@ from interplay.motion.checks.named import CHECKS
 
 SUITE = Path(__file__).resolve().parents[1] / "data" / "prompts.json"
 FRESH = SUITE.with_name("fresh_prompts.json")
-SPLITS = ("dev", "test", "fresh")
+FRESH2 = SUITE.with_name("fresh2_prompts.json")
+SPLITS = ("dev", "test", "fresh", "fresh2")
+# The splits with a file of their own (every prompt there of that split); dev and test share SUITE.
+SPLIT_FILES: dict[str, Path] = {"fresh": FRESH, "fresh2": FRESH2}
 # Table order; the names as the table prints them.
 CATEGORIES: dict[str, str] = {
     "single": "single actions",
@@ -42,6 +50,9 @@ CATEGORIES: dict[str, str] = {
 # open-vocabulary path is tuned on them; the fresh split is its blind counterpart).
 FRESH_CATEGORIES: dict[str, str] = {"edits": "part edits", "everyday": "everyday words (dev)",
                                     "activities": "everyday activities (dev)"}
+# A category's name in one split's table where the shared one would mislead (fresh2's
+# "everyday" prompts are held out, not dev's tuning prompts).
+SPLIT_LABELS: dict[str, dict[str, str]] = {"fresh2": {"everyday": "everyday (held out, blind)"}}
 STARTS = ("standing", "any", "low", "lying", "sitting", "kneeling", "all_fours")
 
 
@@ -119,17 +130,18 @@ def select(prompts: list[Prompt], split: str | None = None, categories=None,
 
 
 def load_split(split: str, ids=None) -> list[Prompt]:
-    """The prompts of one split (optionally only some ids): dev and test from the suite,
-    fresh from its own file (every prompt there must be of split fresh)."""
+    """The prompts of one split (optionally only some ids): dev and test from the suite, fresh
+    and fresh2 from their own files (every prompt there must be of that split)."""
     if split not in SPLITS:
         raise ValueError(f"split must be one of {SPLITS}, got {split!r}")
-    if split != "fresh":
+    path = SPLIT_FILES.get(split)
+    if path is None:
         return select(load_suite(), split, ids=ids)
-    prompts = load_suite(FRESH)
-    wrong = [p.id for p in prompts if p.split != "fresh"]
+    prompts = load_suite(path)
+    wrong = [p.id for p in prompts if p.split != split]
     if wrong:
-        raise ValueError(f"{FRESH.name} holds prompts of other splits: {wrong}")
-    return select(prompts, "fresh", ids=ids)
+        raise ValueError(f"{path.name} holds prompts of other splits: {wrong}")
+    return select(prompts, split, ids=ids)
 
 
 def table_categories(prompts: list[Prompt]) -> dict[str, str]:
@@ -137,3 +149,8 @@ def table_categories(prompts: list[Prompt]) -> dict[str, str]:
     these prompts use."""
     used = {p.category for p in prompts}
     return {**CATEGORIES, **{k: v for k, v in FRESH_CATEGORIES.items() if k in used}}
+
+
+def category_labels(split: str | None = None) -> dict[str, str]:
+    """Every category's name as a report's table prints it, in that split's words."""
+    return {**CATEGORIES, **FRESH_CATEGORIES, **SPLIT_LABELS.get(split or "", {})}
