@@ -97,6 +97,7 @@ class Action(BaseModel):
     hold: str | None = None           # poses: the held pose as a "with …" phrase
     persons: list[int] = Field(default_factory=lambda: [1])
     roles: list[str] = Field(default_factory=list)
+    contact: Literal["hands", "hug"] | None = None   # interactions: the two touch (hands; a hug)
     part: Part | None = None          # verbs: the limb it moves by default
     parts: list[str] = Field(default_factory=list)     # body parts it moves (CoMA's parts)
     counts: bool = False              # it is counted per cycle ("three jumps")

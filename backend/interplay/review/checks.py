@@ -97,13 +97,34 @@ def wants_contact(text: str) -> bool:
     return bool(CONTACT_VERBS.search(text or ""))
 
 
+KIND_SIMILARITY = 0.6        # = generators.interaction.kinds.MIN_SIMILARITY (a test keeps them equal)
+
+
 def contact_mode(text: str) -> str:
     """"hug", "hands" or "none": the contact `text` asks for (`motion.pair.resolve.CONTACTS`)."""
     text = text or ""
     if words("review_hug", ignore_case=True).search(text):
         return "hug"
     couple_dance = words("review_couple_dance", ignore_case=True).search(text)
-    return "hands" if CONTACT_VERBS.search(text) or couple_dance else "none"
+    if CONTACT_VERBS.search(text) or couple_dance:
+        return "hands"
+    return _kind_contact(text)
+
+
+def _kind_contact(text: str) -> str:
+    """The contact of the interaction the catalogue's descriptions say `text` is, when one is
+    near enough (MiniLM cosine ≥ KIND_SIMILARITY, the interaction generator's own bound):
+    "two friends bump fists" is a high five, so "hands"; else "none"."""
+    from interplay.catalogue.load import catalogue
+    from interplay.text.encoder import get_encoder
+    entries = [(a.contact, d) for a in catalogue().of_kind("interaction") for d in a.descriptions]
+    if not entries or not text.strip():
+        return "none"
+    emb = np.asarray(get_encoder().encode([text] + [d for _, d in entries]), dtype=np.float64)
+    emb /= np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12)
+    sims = emb[1:] @ emb[0]
+    best = int(np.argmax(sims))
+    return (entries[best][0] or "none") if sims[best] >= KIND_SIMILARITY else "none"
 
 
 def commonsense(people: list[np.ndarray], text: str = "", fps: int = sk.FPS) -> Checks:
