@@ -30,7 +30,7 @@ from interplay.generators.retrieval.intent import count_of, side_of
 from interplay.motion.kinematics import continue_from, facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import PELVIS
-from interplay.planner.schema import Coverage
+from interplay.planner.schema import Coverage, PartEdits
 from interplay.planner.verbs import third
 
 # Cosine between a segment's words and a primitive's nearest phrasing above which the primitive
@@ -104,6 +104,13 @@ def _said(seg: GenerationSegment) -> list[str]:
     return [text, f"{third(first)} {rest}".strip()]
 
 
+def _whole(seg: GenerationSegment) -> None:
+    """The planner read the words as a verb of its own ("pushes": the body stands, the arms
+    push): the primitive makes the whole body, and the plan the reviewer holds it to says so."""
+    if seg.edits.named():
+        seg.base, seg.edits = seg.prompt, PartEdits()
+
+
 def _entry_of(prim: Primitive) -> str | None:
     """The catalogue entry a primitive makes (an activity is its own entry; a table primitive
     the first entry made by it: "push_up" makes "push-ups")."""
@@ -127,8 +134,10 @@ def choose(plan: GenerationPlan, encoder) -> list[str]:
             prim, sim = find(seg.prompt.removeprefix("a person "), encoder)
             if sim < PRIMITIVE_STRONG:
                 continue
+            _whole(seg)
         elif (found := _activity_over_verb(seg, encoder)) is not None:
             prim, sim = found
+            _whole(seg)
         else:
             continue
         seg.coverage = Coverage(how="primitive", similarity=round(sim, 4), entry=_entry_of(prim),
