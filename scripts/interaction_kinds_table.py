@@ -19,7 +19,10 @@ gen = InteractionGenerator(load_generator(use_spam=False).index)
 P = [("one person helps the other get up off the floor", 6, "help_up"), ("two people spar in a boxing match", 6, "spar"),
      ("she hands him a cup", 6, "hand_over"), ("he taps her on the shoulder", 5, "touch"),
      ("one person pats the other on the back", 5, "touch"), ("one person grabs the other's arm", 5, "touch"),
-     ("two kids chase each other around", 6, "chase")]
+     ("two kids chase each other around", 6, "chase"),
+     ("a father carries his little son on his back", 6, "carry"),
+     ("a big sister gives her brother a piggyback ride around the garden", 7, "carry"),
+     ("a mother leads her little boy by the hand across the park", 7, "lead")]
 print("| prompt | kind | its checks passed | plausible | IF (no contact) / depth cm (contact) | within bound |")
 print("|---|---|---|---|---|---|")
 for prompt, sec, kind in P:
@@ -30,7 +33,7 @@ for prompt, sec, kind in P:
         mo = generate_motion(gen, Request(prompt, 2, float(sec), seed=seed))
         assert mo.plan["composition"]["kind"] == kind
         ok_c += all(run_check(mo.people, s).passed for s in specs(entry))
-        contact = kind in ("help_up", "hand_over", "touch")
+        contact = kind in ("help_up", "hand_over", "touch", "carry", "lead")
         ok_p += all(r.passed for r in plausibility(mo.people, start=START.get(kind, "standing"), contact=contact))
         pb = pair_bounds(np.asarray(mo.people[0], float), np.asarray(mo.people[1], float), "hands" if contact else "none")
         vals.append(pb["depth_cm"] if contact else max(pb["if"], pb["if_any"]))
