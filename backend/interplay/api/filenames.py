@@ -7,16 +7,17 @@ boundary; without any, the name is `interplay-<id>.<ext>`. The studio's download
 
 from __future__ import annotations
 
-import re
 import unicodedata
 
 MAX_WORDS_CHARS = 48
 
 
+_WORD_CHARS = frozenset("abcdefghijklmnopqrstuvwxyz0123456789")
+
 def slug(prompt: str | None, limit: int = MAX_WORDS_CHARS) -> str:
     """The prompt's words as a file-name part: "Two people shake hands!" → "two-people-shake-hands"."""
     text = unicodedata.normalize("NFKD", prompt or "").encode("ascii", "ignore").decode("ascii")
-    words = re.findall(r"[a-z0-9]+", text.lower())
+    words = "".join(c if c in _WORD_CHARS else " " for c in text.lower()).split()
     out = ""
     for word in words:
         joined = f"{out}-{word}" if out else word

@@ -8,7 +8,6 @@ evaluator was trained with for those people.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,7 +40,8 @@ def person_prompt(clip: Clip) -> str:
         return clip.prompt
     if clip.prompt in SINGLE_PROMPTS:
         return SINGLE_PROMPTS[clip.prompt]
-    return re.sub(r"^two people ", "a person ", clip.prompt)
+    two = "two people "
+    return "a person " + clip.prompt[len(two):] if clip.prompt.startswith(two) else clip.prompt
 
 
 def split_samples(clips, split: str = "test", max_frames: int = MAX_FRAMES,

@@ -20,21 +20,19 @@ Proportional scaling alone gave a sprint 1.4 s of an 8 s clip next to a long fre
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from interplay.catalogue import grammar as g
-from interplay.catalogue.words import words
+from interplay.catalogue.words import tokens, words
 from interplay.motion.skeleton import FPS
 from interplay.planner.schema import TrajectorySpec
 from interplay.planner.trajectory_text import path_length
 from interplay.planner.verbs import Verb, lookup
 
 MIN_SECONDS, MAX_SEGMENT = 0.5, 15.0      # one segment: ≥ half a second, ≤ 15 s
-_MANNER = [(r"\b(?:slowly|slow|calmly|gently|carefully|leisurely)\b", 1.4),
-           (r"\b(?:quickly|fast|rapidly|briskly|hurriedly|swiftly)\b", 0.75)]
+_MANNER = [("slow_words", 1.4), ("fast_words", 0.75)]        # (words.toml's list, time factor)
 # Seconds one performance needs at least (per repetition): take-off to landing, down and up,
 # speed reached and held for a few strides. Verbs not listed: 60 % of their typical time.
 LEAST = {"sprint": 2.5, "run": 2.0, "jog": 2.0, "walk": 2.0, "march": 2.0, "stroll": 2.0,
@@ -56,7 +54,7 @@ _COUNTS = {"a few": 3, "few": 3, "several": 4, "a couple of": 2, "one": 1, "two"
 
 
 def _count(word: str) -> int:
-    word = re.sub(r"\s+", " ", word)
+    word = " ".join(word.split())                  # "a  couple of": a count's words
     return int(word) if word.isdigit() else _COUNTS[word]
 
 
@@ -83,8 +81,8 @@ def estimate(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat
         seconds = length / speed if length else verb.seconds
     else:
         seconds = verb.seconds
-    for rx, factor in _MANNER:
-        if re.search(rx, text):
+    for said, factor in _MANNER:
+        if words(said).search(text):
             seconds *= factor
     if repeat > 1 and not _counted_by_path(verb, trajectory):
         seconds *= repeat
@@ -114,7 +112,7 @@ def need(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat: in
         per = LEAST.get(verb.base, 0.6 * verb.seconds)
         reps = 1 if _counted_by_path(verb, trajectory) else repeat
         least = min(want, per * reps)
-    transition = verb.base == "stand" and re.search(r"\bup\b", text)      # "stands up" ends
+    transition = verb.base == "stand" and any(w.text == "up" for w in tokens(text))      # "stands up" ends
     elastic = hold or (verb.kind == "travel" and not bounded) or (verb.base in ELASTIC
                                                                   and not transition)
     return Need(want, max(MIN_SECONDS, min(least, want)), elastic)

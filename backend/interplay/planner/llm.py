@@ -20,7 +20,6 @@ from __future__ import annotations
 import asyncio
 import json
 import math
-import re
 import threading
 from typing import Annotated, Any, Callable, Coroutine, TypeVar
 
@@ -109,13 +108,21 @@ def _messages(prompt: str, persons: int, seconds: float | None) -> list[dict]:
     return [{"role": "system", "content": SYSTEM + schema}, {"role": "user", "content": user}]
 
 
+def _unfenced(text: str) -> str:
+    """A model's answer without the ``` (or ```json) fence around it."""
+    if text.startswith("```"):
+        text = text[3:]
+        text = (text[4:] if text.startswith("json") else text).lstrip()
+    return text[:-3].rstrip() if text.endswith("```") else text
+
+
 def extract_json(content: str) -> dict:
     """The JSON object in a model's answer (bare, or inside ``` fences / surrounding text)."""
     if not isinstance(content, str) or not content.strip():
         raise ValueError("the answer is empty")
     if len(content) > MAX_ANSWER:
         raise ValueError(f"the answer is longer than {MAX_ANSWER} characters")
-    text = re.sub(r"^\s*```(?:json)?\s*|\s*```\s*$", "", content.strip())
+    text = _unfenced(content.strip())
     start, end = text.find("{"), text.rfind("}")
     if start < 0 or end <= start:
         raise ValueError("the answer contains no JSON object")

@@ -12,7 +12,6 @@ lexicon entry's name whose target is its motion text. Embeddings are computed on
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import Callable
@@ -56,15 +55,25 @@ class Vocabulary:
         return i, float(s[i])
 
 
+def _without_speaker(caption: str) -> str:
+    """A caption without its leading "person 2: "."""
+    if not caption.startswith("person "):
+        return caption
+    rest = caption[len("person "):]
+    number = rest[:next((i for i, c in enumerate(rest) if not c.isdecimal()), len(rest))]
+    return rest[len(number) + 1:].lstrip() if number and rest[len(number):len(number) + 1] == ":" else caption
+
+
 def data_phrases(clips) -> list[str]:
     """Clip prompts and whole-body captions, as "a person …" sentences, deduplicated."""
     out: dict[str, None] = {}
     for c in clips:
         out.setdefault(c.prompt.strip(), None)
         for cap in c.captions:
-            text = re.sub(r"^person \d+:\s*", "", cap.text.strip())
+            text = _without_speaker(cap.text.strip())
             if cap.part == "body" or text.startswith("the person"):
-                out.setdefault(re.sub(r"^the person\b", "a person", text), None)
+                person = text.startswith("the person") and not text[10:11].isalnum() and text[10:11] != "_"
+                out.setdefault("a person" + text[10:] if person else text, None)
     return [p for p in out if p]
 
 

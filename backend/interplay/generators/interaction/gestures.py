@@ -8,8 +8,6 @@ quiet start and end (`bodies.extend`). The mirror is the leader's clip reflected
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
 from interplay.catalogue import grammar as g
@@ -30,7 +28,7 @@ TOGETHER_LAG = 2              # frames the second trails the first when both pla
 def solo_text(text: str) -> str:
     """One person's part of "two people jump together": "jump" (the planner's imperative)."""
     t = words("gesture_together", ignore_case=True).cut(g.GESTURE_WHO.sub("", text, count=1))
-    return re.sub(r"\s+", " ", t).strip(" ,.") or text
+    return " ".join(t.split()).strip(" ,.") or text
 
 
 def _clip(c: Cast, person: int, family: str) -> tuple[Clip, np.ndarray]:

@@ -26,11 +26,11 @@ flight phases that start with a landing.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, replace
 
 import numpy as np
 
+from interplay.catalogue.words import Found, words
 from interplay.motion.clip import Caption, Clip
 from interplay.motion.pair.windows import mirror
 
@@ -86,11 +86,11 @@ def offsets(off: np.ndarray, view: View) -> np.ndarray:
 
 def mirror_text(text: str) -> str:
     """The words left and right swapped (case kept)."""
-    def swap(m: re.Match) -> str:
-        w = m.group(0)
+    def swap(found: Found) -> str:
+        w = found.text
         other = "right" if w.lower() == "left" else "left"
         return other.capitalize() if w[0].isupper() else other
-    return re.sub(r"\b(?:left|right)\b", swap, text, flags=re.IGNORECASE)
+    return words("sides", ignore_case=True).sub(text, swap)
 
 
 def text(words: str, view: View) -> str:

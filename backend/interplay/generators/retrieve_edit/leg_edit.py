@@ -13,12 +13,11 @@ every joint outside that leg stays exactly where it was.
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
 from interplay.catalogue.grammar import words_rx
 from interplay.catalogue.load import catalogue
+from interplay.catalogue.words import words
 from interplay.generators.base import Request
 from interplay.generators.retrieval.intent import count_of
 from interplay.motion import skeleton as sk
@@ -36,7 +35,7 @@ def _side(part: str | None, prompt: str) -> str | None:
     for side in ("left", "right"):
         if key in (f"{side}_leg", f"{side}_lower", f"{side}_foot"):
             return side
-    named = re.findall(r"\b(left|right)\s+(?:leg|foot)\b", prompt.lower())
+    named = [f.text.split()[0] for f in words("side_leg").finditer(prompt.lower())]
     return named[0] if len(set(named)) == 1 and key in ("", "whole_body", "body") else None
 
 

@@ -29,7 +29,6 @@ Class → prompt (the data card quotes this table; folder spellings such as
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import numpy as np
@@ -98,8 +97,8 @@ def _class_or_none(stem: str) -> str | None:
 
 def clip_fps(amc_path: str | Path) -> float:
     """HDM05 names clips HDM_<actor>_<class>_<n>_<fps>.amc."""
-    m = re.search(r"_(\d+)$", Path(amc_path).stem)
-    return float(m.group(1)) if m else float(HDM05_FPS)
+    head, underscore, fps = Path(amc_path).stem.rpartition("_")
+    return float(fps) if underscore and fps.isdecimal() else float(HDM05_FPS)
 
 
 def load_hdm05(amc_path: str | Path, asf_path: str | Path) -> tuple[np.ndarray, np.ndarray, dict]:

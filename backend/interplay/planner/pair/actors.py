@@ -27,7 +27,7 @@ def actors(subject: str | None, persons: int, prev: list[int] | None, names: dic
     so far ("man", "woman") to people; `prev` is who acted in the clause before."""
     if persons == 1:
         return [0]
-    s = re.sub(r"\s+", " ", (subject or "").strip())
+    s = " ".join((subject or "").split())
     if MUTUAL.search(text) or BOTH.whole(s):
         return [0, 1]
     if not s:
