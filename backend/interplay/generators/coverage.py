@@ -41,7 +41,7 @@ def cover(plan: GenerationPlan, index: RetrievalIndex | None = None) -> None:
         # each person's own part through the one-person generator.
         kind = (plan.composition or {}).get("kind")
         if plan.generator == "compose" and kind and (cov.how != "nearest" or kind != "together"):
-            cov = cov.model_copy(update={"how": "composed", "entry": plan.composition.get("kind")})
+            cov = cov.model_copy(update={"how": "composed", "entry": kind})
         best = _best_piece(seg)
         if best is not None and cov.how in ("nearest", "capture") and cov.entry is None:
             shown = cov.shown
