@@ -62,3 +62,8 @@ def test_a_phrase_that_may_not_go_on():
     assert sits.search("he sits down") and not sits.search("he sits up") and not sits.search("sits upright")
     with pytest.raises(ValueError, match="words after"):
         parse("sit !(up) down")
+
+
+def test_words_said_any_number_of_times():
+    arms = Phrases(["(arm|arms) on [the|his|her|both]* (hip|hips)"])
+    assert arms.search("arms on hips") and arms.search("arms on both his hips") and not arms.search("arms on a hip")

@@ -7,7 +7,7 @@ into words once (a word is a run of letters, digits and underscores, what a regu
 
 A phrase is written in the catalogue's template notation: words in order; `*` in a word any
 letters there ("hug*": hug, hugs, hugging; "*greet*": greets, regreet); `*` alone any one word;
-`(a|b c)` one of; `[a|b]` one of or none; `~3` up to three words between; `...` any words and
+`(a|b c)` one of; `[a|b]` one of or none; `[a|b]*` any number of them; `~3` up to three words between; `...` any words and
 marks between; and at the end `!(a|b)`: the phrase may not go on with these. Words are joined
 by spaces in the text; a hyphen in a phrase's word ("high-five") takes spaces or hyphens there,
 an apostrophe ("other's") the apostrophe alone. Letters compare as written unless the phrases
@@ -59,6 +59,7 @@ class Slot:
     optional: bool = False
     gap: int = 0
     negative: bool = False      # "!(a|b)" at the end: the phrase may not go on with these
+    repeated: bool = False      # "[a|b]*": any number of them, or none
 
 
 def _words(alternative: str) -> tuple[Word, ...]:
@@ -84,9 +85,10 @@ def parse(template: str) -> list[Slot]:
             if close < 0:
                 raise ValueError(f"{template!r}: {rest[0]} not closed")
             body = rest[1 + negative:close]
+            repeated = rest[0] == "[" and rest[close + 1:close + 2] == "*"
             slots.append(Slot(tuple(_words(a) for a in body.split("|")), optional=rest[0] == "[",
-                              negative=negative))
-            rest = rest[close + 1:].lstrip()
+                              negative=negative, repeated=repeated))
+            rest = rest[close + 1 + repeated:].lstrip()
             if negative and rest:
                 raise ValueError(f"{template!r}: words after !(…)")
             continue
@@ -173,7 +175,8 @@ class Phrases:
                 yield from self._ends(slots, s + 1, text, toks, words, k, began)
             return
         for end in ends:
-            yield from self._ends(slots, s + 1, text, toks, words, end, began)
+            again = slot.repeated and end > k                 # "[the|his]*": the same slot once more
+            yield from self._ends(slots, s if again else s + 1, text, toks, words, end, began)
         if slot.optional:
             yield from self._ends(slots, s + 1, text, toks, words, k, began)
 

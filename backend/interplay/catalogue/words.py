@@ -17,7 +17,7 @@ from pydantic import BaseModel, ConfigDict, field_validator
 
 from interplay.catalogue.phrases import Found, Phrases, parse, tokens
 
-__all__ = ["Found", "Phrases", "parse", "tokens", "words", "lists", "questions", "cues", "WordLists"]
+__all__ = ["Found", "Phrases", "parse", "tokens", "words", "lists", "questions", "cues", "poses", "WordLists"]
 
 PATH = Path(__file__).with_name("words.toml")
 
@@ -51,6 +51,22 @@ class Cue(BaseModel):
         return said
 
 
+class Pose(BaseModel):
+    """A pose held over a segment (planner/manner/holds.py): the words that name it, its
+    instruction ("{side}": written per arm) and whether it is one action of both arms."""
+    model_config = ConfigDict(extra="forbid")
+    said: list[str]
+    instruction: str
+    together: bool = False
+
+    @field_validator("said")
+    @classmethod
+    def _said_parses(cls, said: list[str]) -> list[str]:
+        for p in said:
+            parse(p)
+        return said
+
+
 class WordLists(BaseModel):
     """words.toml: named lists of phrases, and the questions (the file says what each is for)."""
     model_config = ConfigDict(extra="forbid")
@@ -58,6 +74,7 @@ class WordLists(BaseModel):
     question: list[Question] = []
     part_cue: list[Cue] = []
     body_cue: list[Cue] = []
+    pose: list[Pose] = []
 
     @field_validator("lists")
     @classmethod
@@ -89,6 +106,12 @@ def cues(table: str) -> tuple[tuple[Phrases, tuple[str, ...]], ...]:
 def _cues(table: str) -> tuple[tuple[Phrases, tuple[str, ...]], ...]:
     rows = word_lists().part_cue if table == "part" else word_lists().body_cue
     return tuple((Phrases(c.said), tuple(c.shown)) for c in rows)
+
+
+@lru_cache(maxsize=1)
+def poses() -> tuple[tuple[Phrases, str, bool], ...]:
+    """The held poses words.toml names: (their phrases, the instruction, both arms as one)."""
+    return tuple((Phrases(p.said), p.instruction, p.together) for p in word_lists().pose)
 
 
 @lru_cache(maxsize=1)

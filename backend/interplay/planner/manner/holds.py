@@ -18,40 +18,14 @@ caller's decision (`decompose`, `plan`).
 
 from __future__ import annotations
 
-import re
-
 from interplay.catalogue import grammar as g
+from interplay.catalogue.words import poses, words
 
 ARMS = ("left_arm", "right_arm")
-_ARM = r"(?:arms?|hands?|fists?|palms?)"
-_DET = r"(?:(?:the|their|his|her|your|both|each|a|an|its)\s+)*"
-
-# (pattern, instruction, together): `together` instructions are one action of both arms, the
-# same words for each; the others are written per side ("{side}"). First match wins.
-POSES: tuple[tuple[str, str, bool], ...] = (
-    (rf"\b{_ARM}\s+(?:\w+\s+)?(?:crossed|folded)|\b(?:cross|crosse[sd]|crossing|fold|folds|"
-     rf"folded|folding)\s+{_DET}(?:\w+\s+)?arms\b|\bcrossed\s+arms\b|\bwakanda\b",
-     "holds both arms crossed in front of the chest", True),
-    (rf"\b{_ARM}\s+on\s+{_DET}(?:hips?|waist)\b|\bakimbo\b",
-     "holds the {side} hand on the hip", False),
-    (rf"\b{_ARM}\s+(?:clasped\s+|held\s+|placed\s+|together\s+)*behind\s+{_DET}head\b",
-     "holds the {side} hand behind the head", False),
-    (rf"\b{_ARM}\s+(?:clasped\s+|held\s+|placed\s+|together\s+)*behind\s+{_DET}back\b",
-     "holds the {side} hand behind the back", False),
-    (rf"\bt[\s-]?pose\b|\b{_ARM}\s+(?:\w+\s+){{0,2}}out\s+(?:to|at)\s+{_DET}sides?\b|"
-     rf"\b{_ARM}\s+(?:wide\s+)?(?:spread|outstretched)\b|\b(?:spread|spreads|spreading|"
-     rf"outstretched)\s+{_DET}arms\b|\bstretch\w*\s+{_DET}(?:\w+\s+)?arms?\s+out\s+to\s+",
-     "holds the {side} arm stretched out to the side at shoulder height", False),
-    (rf"\b{_ARM}\s+(?:\w+\s+){{0,2}}(?:in\s+front|forwards?\b|ahead\b)|\b(?:extend|extends|"
-     rf"extended|extending)\s+{_DET}(?:\w+\s+)?arms?\s+forward",
-     "holds the {side} arm straight out in front at shoulder height", False),
-    (rf"\b{_ARM}\s+(?:\w+\s+){{0,2}}(?:raised|up\b|above|over\s+{_DET}head|in\s+the\s+air|high"
-     rf"\b|upwards?\b|lifted)|\b(?:raise|raises|raised|raising|lift|lifts|lifted|lifting|put|"
-     rf"puts|putting|hold|holds|holding|keep|keeps|keeping)\s+{_DET}(?:\w+\s+)?{_ARM}\s*"
-     rf"(?:up\b|above|over|in\s+the\s+air|high\b)|\b(?:raise|raises|raised|raising|lift|lifts|"
-     rf"lifted|lifting)\s+{_DET}(?:\w+\s+)?{_ARM}\b",
-     "holds the {side} arm raised above the head", False),
-)
+# (phrases, instruction, together): words.toml's held poses; `together` instructions are one
+# action of both arms, the same words for each; the others are written per side ("{side}").
+# First named wins.
+POSES = poses()
 
 # What a step followed by these words does: keeps its pose ("… and waits", "… and keeps them
 # up", "… and stays there", "holds it"). Said on its own it is a wait, not a hold.
@@ -72,12 +46,12 @@ def _sides(text: str) -> tuple[str, ...]:
 def held(phrase: str) -> dict[str, str]:
     """{part: "holds …"} for the held pose a phrase names, {} when it names none."""
     text = phrase.lower()
-    for pattern, words, together in POSES:
-        if re.search(pattern, text):
+    for said, instruction, together in POSES:
+        if said.search(text):
             if together:
-                return dict.fromkeys(ARMS, words)
-            parts = ARMS if "t-pose" in text or re.search(r"\bt\s?pose", text) else _sides(text)
-            return {p: words.format(side=p.split("_")[0]) for p in parts}
+                return dict.fromkeys(ARMS, instruction)
+            parts = ARMS if "t-pose" in text or words("t_pose").search(text) else _sides(text)
+            return {p: instruction.format(side=p.split("_")[0]) for p in parts}
     return {}
 
 
