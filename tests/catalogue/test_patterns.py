@@ -16,7 +16,6 @@ INLINE_CALLS = 45
 # Modules whose phrase tables are still patterns (literal alternations of words), and how many:
 # the counts may only go down, and no other module may start one.
 LEGACY_TABLES = {
-
     "planner/pair/roles.py": 7, "planner/decompose.py": 6, "planner/temporal.py": 6,
     "generators/coda/contact_kinds.py": 1,
 }

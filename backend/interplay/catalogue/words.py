@@ -1,7 +1,7 @@
 """The word lists of `words.toml`: words the planner, the generators and the reviewer look for
 that name no action of actions.toml (who does it, touches, places, parts of the body, directions,
-context), the questions the planner answers and the reviewer's caption cues, validated; their
-phrases are found in a text as words by `catalogue.phrases`.
+context); and `tables.toml`: the questions the planner answers, the reviewer's caption cues and
+the held poses; validated. Their phrases are found in a text as words by `catalogue.phrases`.
 
     words("review_hug").search("they hug each other")     → Found(start=5, end=8, text='hug')
     words("pair_both").whole("the two friends")          → True
@@ -20,6 +20,7 @@ from interplay.catalogue.phrases import Found, Phrases, parse, tokens
 __all__ = ["Found", "Phrases", "parse", "tokens", "words", "lists", "questions", "cues", "poses", "WordLists"]
 
 PATH = Path(__file__).with_name("words.toml")
+TABLES = Path(__file__).with_name("tables.toml")         # questions, caption cues, held poses
 
 
 class Question(BaseModel):
@@ -89,8 +90,9 @@ class WordLists(BaseModel):
 
 @lru_cache(maxsize=1)
 def word_lists() -> WordLists:
-    """words.toml, validated."""
-    return WordLists.model_validate(tomllib.loads(PATH.read_text(encoding="utf-8")))
+    """words.toml and tables.toml, validated."""
+    data = {**tomllib.loads(PATH.read_text(encoding="utf-8")), **tomllib.loads(TABLES.read_text(encoding="utf-8"))}
+    return WordLists.model_validate(data)
 
 
 def lists() -> dict[str, list[str]]:
