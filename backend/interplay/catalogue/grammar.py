@@ -228,6 +228,18 @@ LIMB_PART = re.compile(r"\b(?:(left|right|both|each|either|other)\s+)?(arms?|han
 MODIFIER_MARK = re.compile(r"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:while|with|holding|having|keeping|"
                    r"as\s+(?:he|she|they|if|though|the\s+person))\b)|"
                    r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
+# "with the left hand", a modifier's own limb ("(the) left arm raised": side, limb, the rest)
+WITH_LIMB = re.compile(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + LIMB_PART.pattern[2:])
+MODIFIER_LIMB = re.compile(r"^(?:(?:the|a|an|his|her|their)\s+)?(?:(left|right|both|other)\s+)?"
+                           r"(?:(arms?|hands?|fists?|legs?|foot|feet|knees?|elbows?|palms?)\b)?\s*(.*)$")
+# Both limbs written for one side ("both clenched fists" → "the clenched left fist"): groups are
+# the adjective (with its space) and the limb
+_LIMB = r"(arm|hand|fist|leg|knee|elbow|palm|shoulder|wrist|forearm|thumb)"
+_ADJS = r"((?:clenched|open|outstretched|bent|raised|straight|closed|extended)\s+)?"
+BOTH_LIMBS = re.compile(rf"\bboth\s+{_ADJS}{_LIMB}s?\b")
+BOTH_FEET = re.compile(rf"\bboth\s+{_ADJS}feet\b")
+LIMBS = re.compile(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right ){_LIMB}s\b")
+FEET = re.compile(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right )feet\b")
 AND_SIDE = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|right|both|other)\b)")
 
 

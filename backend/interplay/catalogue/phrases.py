@@ -47,6 +47,14 @@ def tokens(text: str) -> list[Token]:
     return out
 
 
+def one_space(text: str) -> str:
+    """Each run of spaces (tabs, line ends) as one space, the ends too ("  a  b " → " a b ")."""
+    inner = " ".join(text.split())
+    if not inner:
+        return " " if text else ""
+    return (" " if text[0].isspace() else "") + inner + (" " if text[-1].isspace() else "")
+
+
 # A parsed phrase is a list of slots; a slot is words (one of its alternatives, or none when
 # optional) or a gap of up to n words. An alternative is a tuple of (word, joint): the joint says
 # what stands before the word in the text: " " spaces, "-" spaces or hyphens, "'" an apostrophe.

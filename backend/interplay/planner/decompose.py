@@ -12,10 +12,10 @@ raised"); head and trunk modifiers ("looking down", "while spinning around") sta
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.phrases import Found, one_space, tokens
 from interplay.catalogue.words import words as listed
 from interplay.planner.manner.holds import held, keep
 from interplay.planner.verbs import VERBS, Verb, doing_nouns, lookup, third
@@ -63,13 +63,34 @@ def _limbs(side: str | None, noun: str, default_side: str | None = None) -> list
 # right hand each (the benchmark's handshake check compares right hands)
 
 
+def _said(text: str, *said: str) -> bool:
+    """Whether one of these words is a word of the text."""
+    return any(t.text in said for t in tokens(text))
+
+
+def _without_opening(text: str) -> str:
+    """The text without the words that open a simultaneous phrase ("while", "as he", "with",
+    "still" …), each followed by spaces."""
+    while (found := listed("modifier_opening").starts(text)) and text[found.end:found.end + 1].isspace():
+        text = text[found.end:].lstrip()
+    return text
+
+
+def _without_while(text: str) -> str:
+    """"while leaning forward" → "leaning forward" (also "as …")."""
+    first = tokens(text)[:1]
+    if first and first[0].start == 0 and first[0].text in ("while", "as") and text[first[0].end:][:1].isspace():
+        return text[first[0].end:].lstrip()
+    return text
+
+
 def parts_in(text: str) -> list[str]:
     """The parts a phrase moves: the limb after "with" ("holding the foot with both hands" →
     arms), else its first limb mention ("hands resting on the knees" → arms); a handshake
     with no side named, the right arm."""
-    if listed("handshake").search(text) and not re.search(r"\b(left|both)\b", text):
+    if listed("handshake").search(text) and not _said(text, "left", "both"):
         return ["right_arm"]
-    m = re.search(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + g.LIMB_PART.pattern[2:], text)
+    m = g.WITH_LIMB.search(text)
     found = _limbs(m.group(1), m.group(2)) if m else []
     if not found:
         m = g.LIMB_PART.search(text)
@@ -84,25 +105,23 @@ def parts_in(text: str) -> list[str]:
 def plain(text: str) -> str:
     """Possessives → "the" before a body part ("his left hand" → "the left hand"), "their"
     before anything else ("his breath" → "their breath"), spaces tidied."""
-    def det(m: re.Match) -> str:
-        return "the " if listed("body_part", ignore_case=True).starts(text, m.end()) else "their "
-    text = re.sub(r"\b(?:his|her|their|its)\s+(?!own\b)", det, text)
-    return re.sub(r"\s+", " ", text).strip(" ,")
-
-
-_LIMB = r"(arm|hand|fist|leg|knee|elbow|palm|shoulder|wrist|forearm|thumb)"
-_ADJS = r"((?:clenched|open|outstretched|bent|raised|straight|closed|extended)\s+)?"
+    def det(found: Found) -> str:
+        if not found.text[-1:].isspace():             # a possessive at the end or before a mark
+            return found.text
+        return "the " if listed("body_part", ignore_case=True).starts(text, found.end) else "their "
+    text = listed("possessive").sub(text, det, trail=True)
+    return " ".join(text.split()).strip(" ,")
 
 
 def for_side(text: str, part: str) -> str:
     """An instruction for both sides ("raises both clenched fists") written for one ("raises the
     clenched left fist")."""
     side = part.split("_")[0]
-    text = re.sub(rf"\bboth\s+{_ADJS}{_LIMB}s?\b", rf"the \1{side} \2", text)
-    text = re.sub(rf"\bboth\s+{_ADJS}feet\b", rf"the \1{side} foot", text)
-    text = re.sub(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right ){_LIMB}s\b", rf"the \1{side} \2", text)
-    text = re.sub(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right )feet\b", rf"the \1{side} foot", text)
-    return re.sub(r"\bthe\s+the\b", "the", text.replace(" sides", " side"))
+    text = g.BOTH_LIMBS.sub(rf"the \1{side} \2", text)
+    text = g.BOTH_FEET.sub(rf"the \1{side} foot", text)
+    text = g.LIMBS.sub(rf"the \1{side} \2", text)
+    text = g.FEET.sub(rf"the \1{side} foot", text)
+    return listed("the_the").sub(text.replace(" sides", " side"), lambda found: "the")
 
 
 def split_subject(text: str) -> tuple[str | None, str]:
@@ -126,14 +145,12 @@ def split_subject(text: str) -> tuple[str | None, str]:
 def _modifier_edit(mod: str, last_limb: list[str]) -> tuple[list[str], str, Verb | None]:
     """(parts, instruction, verb) of one simultaneous phrase ("with the right arm raised")."""
     state = listed("state_modifier").starts(mod) is not None
-    mod = re.sub(r"^(?:(?:while|as\s+(?:he|she|they|if|though|the\s+person)|with|having|keeping|"
-                 r"still)\s+)+", "", mod).strip()
+    mod = _without_opening(mod).strip()
     first = mod.split(" ", 1)[0]
     hit = lookup(first)
     if hit and hit[1] in ("gerund", "third"):                       # "raising the left arm"
         return parts_in(mod), plain(third(hit[0].base) + mod[len(first):]), hit[0]
-    m = re.match(r"^(?:(?:the|a|an|his|her|their)\s+)?(?:(left|right|both|other)\s+)?"
-                 r"(?:(arms?|hands?|fists?|legs?|foot|feet|knees?|elbows?|palms?)\b)?\s*(.*)$", mod)
+    m = g.MODIFIER_LIMB.match(mod)
     assert m is not None                    # every group is optional: the pattern always matches
     side, noun, rest = m.group(1), m.group(2), m.group(3)
     if noun is None and side in ("left", "right") and last_limb:
@@ -218,9 +235,10 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
     last = list(last_parts or [])
     if verb.kind == "part":
         assert verb.part is not None        # every "part" verb names its limb (verbs.VERBS)
-        if re.search(r"\b(?:it|them)\b", main) and last:                # "lowers it"
+        it = next((t for t in tokens(main) if t.text in ("it", "them")), None)
+        if it is not None and last:                                     # "lowers it"
             noun = "both arms" if len(last) == 2 else "the " + last[0].replace("_", " ")
-            main = re.sub(r"\b(?:it|them)\b", noun, main, count=1)
+            main = main[:it.start] + noun + main[it.end:]
         chunks = g.AND_SIDE.split(main)
         main_parts = [p for c in chunks for p in (parts_in(c) or _ellipsis(c, []))] or \
             _limbs("both" if verb.part in ("arms", "legs") else "right", verb.part.rstrip("s"))
@@ -257,18 +275,18 @@ def decompose(clause: str, posture: str = "standing", last_parts: list[str] | No
                 base_bits.append(plain(mod))
     if verb.kind == "part":
         base, new_posture = POSTURE_BASE.get(posture, POSTURE_BASE["standing"]), posture
-        whole = [_as_third(re.sub(r"^(?:while|as)\s+", "", b)) for b in base_bits]
+        whole = [_as_third(_without_while(b)) for b in base_bits]
         if whole:                                  # "… while leaning forward" → "a person leans forward"
             base = "a person " + " and ".join(whole)
     else:
         bits = [b if b.startswith(("while", "as ")) else f"while {b}" for b in base_bits]
         base = " ".join(["a person", main] + bits)
         new_posture = verb.posture or posture
-        if verb.base == "squat" and re.search(r"\b(?:down|on the floor|low)\b", main):
+        if verb.base == "squat" and listed("squat_low").search(main):
             new_posture = "squatting"
     if hold or verb.base in ("hold", "keep"):
         keep(edits, main, verb.kind == "part")
-    return Action(text, subject, verb, re.sub(r"\s+", " ", base), edits, new_posture)
+    return Action(text, subject, verb, one_space(base), edits, new_posture)
 
 
 def _default_limb(v: Verb, words: str) -> tuple[list[str], str]:
@@ -293,12 +311,12 @@ def _as_third(phrase: str) -> str:
 
 
 def _ellipsis(chunk: str, main_parts: list[str]) -> list[str]:
-    m = re.search(r"\b(left|right)\b", chunk)
+    side = next((t.text for t in tokens(chunk) if t.text in ("left", "right")), None)
     limb = main_parts[0].split("_")[1] if main_parts else "arm"
-    return [f"{m.group(1)}_{limb}"] if m else []
+    return [f"{side}_{limb}"] if side else []
 
 
 def _fill(chunk: str, main_parts: list[str]) -> str:
     """"the right upwards" → "the right arm upwards" (the limb named earlier)."""
     limb = main_parts[0].split("_")[1] if main_parts else "arm"
-    return re.sub(r"\b(left|right)\b(?!\s+(?:arm|hand|leg|foot|fist|knee))", rf"\1 {limb}", chunk)
+    return listed("side_without_limb").sub(chunk, lambda found: f"{found.text} {limb}")
