@@ -10,7 +10,7 @@ from pathlib import Path
 PACKAGE = Path(__file__).resolve().parents[2] / "backend" / "interplay"
 GRAMMAR = "catalogue/grammar.py"
 # re.compile calls in grammar.py: the ceiling reached so far (issue 23 asks for 25); it may only go down
-GRAMMAR_COMPILES = 55
+GRAMMAR_COMPILES = 49
 # calls like re.search("…", text) outside grammar.py (no phrase table among them): may only go down
 INLINE_CALLS = 27
 # Modules whose phrase tables are still patterns (literal alternations of words), and how many:

@@ -63,8 +63,7 @@ _NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
 # ("a few steps" asks no exact count).
 VAGUE = {"a few": 3, "several": 3, "a couple": 2, "a couple of": 2}
 _VAGUE = r"(?:a\s+few|several|a\s+couple(?:\s+of)?)"
-ONCE = re.compile(r"\bonce\b|\bone\s+time\b|\ba\s+single\b")
-# A count said in words: "once", "twice", "three times", "one time".
+# A count said in words: "once", "twice", "three times", "one time"; one of something.
 ONE_SAID = re.compile(r"\b(?:one|a\s+single)\s+[a-z-]+", re.IGNORECASE)     # "one backflip"
 COUNT_SAID = re.compile(rf"\b(?:once|twice|thrice|{_NUMBER}\s+times?)\b", re.IGNORECASE)
 
@@ -96,7 +95,6 @@ def one_rx(nouns) -> re.Pattern:
 LIMB = r"(?:leg|foot|feet|knee|arm|hand|fist|elbow|shoulder)s?"
 SIDE = re.compile(rf"\b(left|right)(?:[\s-]+(?:hand(?:ed)?|footed))?\s+{LIMB}\b|"
                   rf"\b(left|right)[\s-]+(?:handed|footed)\b")
-LEFT_RIGHT = re.compile(r"\b(left|right)\b")
 
 
 def words_of(text: str) -> list[str]:
@@ -122,9 +120,6 @@ def named_rx(names, followed_by, intro, sequential, adjectives, tails) -> re.Pat
     return rx(src, re.IGNORECASE)
 
 
-CLAUSE_BREAK = re.compile(r"[,.;]|\bthen\b")
-
-
 # --- directions, turns, postures: sentence structure around the catalogue's words ---
 BACK_NOT = r"(?!\s+(?:up|to|home|and|into|in)\b)"      # "runs back to …", "steps back up" go somewhere
 
@@ -135,9 +130,6 @@ def back_rx(travel_forms) -> re.Pattern:
     return rx(rf"\b(?:{verbs})\s+back\b{BACK_NOT}")
 
 
-TURN_SIDE = re.compile(r"\bturn\w*\s+(?:to\s+(?:the|his|her|their)\s+)?(left|right)\b")
-STOPS = re.compile(r"\bstands?\s+still\b|\bstops?\b(?!\s+\w+ing\s+(?:the|a|his|her)\b)|"
-                   r"\bhalts?\b|\bcomes?\s+to\s+a\s+(?:stop|halt)\b")
 # Held poses: on one leg (a stance or a lifted leg held), a squat held.
 ONE_LEG = re.compile(r"\b(?:stand\w*|balanc\w*|stay\w*|remain\w*)\b[^.]*?\bon (?:one|a single|the (?:left|right)"
                      r"|(?:your|his|her|their) (?:left|right)) (?:leg|foot)\b"
@@ -207,7 +199,6 @@ WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+
 CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
 STRIKING_WHILE = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
                             re.IGNORECASE)
-COUNT_WORD = re.compile(r"\b(?:once|twice|thrice|times|\d+)\b", re.I)
 # "…, then the right": a clause that only names a side.
 SIDE_ONLY = re.compile(r"^(?:and\s+|then\s+)*(?:with\s+|using\s+)?(?:the\s+)?(left|right)"
                        r"(?:\s+(?:one|fist|hand|arm|leg|foot|side))?$")

@@ -18,8 +18,9 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from interplay.catalogue.grammar import CLAUSE_BREAK, named_rx, number
+from interplay.catalogue.grammar import named_rx, number
 from interplay.catalogue.load import catalogue, on_change
+from interplay.catalogue.phrases import tokens
 from interplay.planner.verbs import gerund, lookup
 
 
@@ -111,7 +112,9 @@ def rewrite_named(text: str) -> tuple[str, list[str], list[tuple[str, str]]]:
 
 def _verb_before(m: re.Match) -> bool:
     """Is there a motion verb in the clause before the match ("walks holding a T-pose")?"""
-    clause = CLAUSE_BREAK.split(m.string[:m.start()])[-1]
+    before = m.string[:m.start()]
+    cut = max([before.rfind(c) + 1 for c in ",.;"] + [t.end for t in tokens(before) if t.text == "then"])
+    clause = before[cut:]                                   # after the last , . ; or "then"
     return any((h := lookup(w)) and h[0].kind != "light" for w in clause.split())
 
 

@@ -23,6 +23,7 @@ import math
 from string import ascii_letters
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.phrases import tokens
 from interplay.catalogue.words import words
 from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
@@ -110,10 +111,15 @@ def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temp
 ONE_ACTION = g.one_action_rx(temporal.COUNTED_ONCE | {"spin"})
 
 
+def _says_count(text: str) -> bool:
+    """A count in the words: "once", "twice", "thrice", "times" or a number (any case)."""
+    return any(t.text.lower() in ("once", "twice", "thrice", "times") or t.text.isdecimal() for t in tokens(text))
+
+
 def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) -> None:
     """Keep a count of one the words asked for (ONE_ACTION) as "once" on the action."""
     said = ONE_ACTION.search(split_subject(clause)[1])      # not the subject's "a person"
-    if repeat != 1 or said is None or g.COUNT_WORD.search(action.text) or ONE_ACTION.search(action.text):
+    if repeat != 1 or said is None or _says_count(action.text) or ONE_ACTION.search(action.text):
         return
     action.text = f"{action.text} once"
     if action.verb is None or action.verb.kind != "part":     # a kick's base is the stand
@@ -127,10 +133,11 @@ def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) 
 def _other_side(clause, before: Action, reasons: list[str]) -> None:
     """A clause that only names a side after an action with one: that action, on this side."""
     m = g.SIDE_ONLY.match(clause.text.strip())
-    if m is None or not g.LEFT_RIGHT.search(before.text):
+    said = next((t for t in tokens(before.text) if t.text in ("left", "right")), None)
+    if m is None or said is None:
         return
     side = m.group(1)
-    text = g.LEFT_RIGHT.sub(side, before.text, count=1)
+    text = before.text[:said.start] + side + before.text[said.end:]
     reasons.append(f"ellipsis: '{clause.text}' is '{text}' (the action before, on the {side})")
     clause.text = text
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.load import catalogue, on_change
-from interplay.catalogue.words import words
+from interplay.catalogue.words import tokens, words
 from interplay.planner.verbs import forms
 
 TRAVELS = ("backward", "left", "right", "sideways")
@@ -117,14 +117,14 @@ def turn_of(prompt: str, repeat: int = 1) -> tuple[int, str] | None:
         return 360 * (count_of(t, repeat) or 1), "any"
     if words("turns_around").search(t):
         return 180, "any"
-    m = g.TURN_SIDE.search(t)
-    return (90, m.group(1)) if m else None
+    m = words("turn_side").search(t)
+    return (90, m.text.split()[-1]) if m else None
 
 
 def still_of(prompt: str) -> bool:
     """Does the segment stop and stand ("stops walking and stands still", "halts")?"""
     t = prompt.lower()
-    return bool(g.STOPS.search(t)) and not words("goes_on").search(t)
+    return bool(words("stops").search(t)) and not words("goes_on").search(t)
 
 
 def _travel_forms() -> list[str]:
@@ -142,7 +142,7 @@ def travel_of(prompt: str) -> str | None:
     sideways, step = _entry("sideways").search(t), words("step_to_side").search(t)
     start = sideways.start() if sideways else step.start if step else None
     if start is not None:
-        sides = g.LEFT_RIGHT.findall(t[start:])
+        sides = [w.text for w in tokens(t[start:]) if w.text in ("left", "right")]
         return sides[0] if sides else "sideways"
     return None
 
@@ -181,7 +181,7 @@ def count_of(prompt: str, repeat: int = 1) -> int | None:
     m = g.times_rx(tuple(plural)).search(t)
     if m:
         return g.number(m.group(1) or m.group(2))
-    if g.ONCE.search(t) or g.one_rx(tuple(singular)).search(t):
+    if words("once").search(t) or g.one_rx(tuple(singular)).search(t):
         return 1
     return None
 

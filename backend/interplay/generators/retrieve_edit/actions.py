@@ -9,8 +9,9 @@ left to the base motion (and named in the reasons, so a user sees it was not lai
 
 from __future__ import annotations
 
-from interplay.catalogue.grammar import LEFT_RIGHT, template_rx
+from interplay.catalogue.grammar import template_rx
 from interplay.catalogue.load import catalogue
+from interplay.catalogue.phrases import tokens
 from interplay.catalogue.words import words
 from interplay.generators.retrieve_edit.arm_poses import ArmAction
 from interplay.planner.schema import Segment
@@ -37,7 +38,7 @@ def both_pose(text: str) -> str | None:
 
 
 def side_of(text: str) -> str | None:
-    sides = sorted(set(LEFT_RIGHT.findall(text.lower())))
+    sides = sorted({t.text for t in tokens(text.lower()) if t.text in ("left", "right")})
     return sides[0] if len(sides) == 1 else None
 
 
