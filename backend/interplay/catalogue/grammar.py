@@ -268,6 +268,7 @@ CLAUSE_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|
 
 
 # --- two people's sentence structure (planner/pair/roles.py, actors.py) ---
+PAIR_NAMES = re.compile(r"^(?:a|an|the)?\s*(\w+) and (?:a|an|the)?\s*(\w+)$")       # "the man and the woman"
 WHO_ANSWERS = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
 TAKE_TURNS = re.compile(r"\b(?:take|takes|taking)\s+turns?\s+(?:at\s+)?(\w+ing)\b")
 COPIES_THE_OTHER = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"

@@ -17,8 +17,6 @@ cosine; a clause kept as written is `nearest`: the studio shows the closest capt
 
 from __future__ import annotations
 
-import re
-
 from interplay.catalogue.grammar import COUNT_SAID, ONE_SAID
 from interplay.catalogue.load import catalogue
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose, split_subject
@@ -51,10 +49,21 @@ def _unknown_verb(words: list[str]) -> bool:
                                    head.endswith("ing"))
 
 
+_WORD_CHARS = frozenset("abcdefghijklmnopqrstuvwxyz-")
+
+
+def _without_prefix(text: str, subjects: tuple[str, ...]) -> str:
+    """The text without the first of `subjects` it starts with and the spaces after it."""
+    for subject in subjects:
+        if text.startswith(subject) and text[len(subject):len(subject) + 1].isspace():
+            return text[len(subject):].lstrip()
+    return text
+
+
 def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reasons):
     """A clause the decomposer did not understand: the nearest vocabulary phrase when close
     enough; None when the clause has no motion at all (it is dropped)."""
-    words = re.findall(r"[a-z-]+", action.text)
+    words = "".join(c if c in _WORD_CHARS else " " for c in action.text).split()     # runs of a-z and -
     if all(is_verb(w, ("light",)) or w in _FILLER for w in words):
         reasons.append(f"dropped '{clause}': no motion in it")       # "gets (tired)"
         return None
@@ -72,7 +81,7 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
                 new = decompose(target, posture, last_parts)
                 if not new.known:                # a data phrase with a verb we lack ("high-five")
                     new.text = split_subject(target)[1] if split_subject(target)[0] else \
-                        re.sub(r"^(?:two people|a person)\s+", "", target)
+                        _without_prefix(target, ("two people", "a person"))
                     new.base, new.verb = f"a person {new.text}", VERBS["pose"]
                 new.subject = action.subject
                 new.matched = (match.phrase, match.score)
@@ -85,7 +94,7 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
     if not any(lookup(w) or noun_verb(w) for w in words) and not _unknown_verb(words):
         reasons.append(f"dropped '{clause}': no motion in it")
         return None
-    action.text = re.sub(r"^(?:two people|a person|the person|they|both)\s+", "", action.text)
+    action.text = _without_prefix(action.text, ("two people", "a person", "the person", "they", "both"))
     action.text = " ".join(_without_subject(action.text.split()))
     reasons.append(f"unknown motion '{action.text}': kept as written")
     action.base, action.verb = f"a person {action.text}", VERBS["pose"]

@@ -12,8 +12,7 @@ starts is person 0.
 
 from __future__ import annotations
 
-import re
-
+from interplay.catalogue import grammar as g
 from interplay.catalogue.words import words
 
 # the subjects (each read as the whole subject) and, anywhere in a clause, what both do
@@ -32,7 +31,7 @@ def actors(subject: str | None, persons: int, prev: list[int] | None, names: dic
         return [0, 1]
     if not s:
         return prev or [0, 1]
-    pair = re.match(r"^(?:a|an|the)?\s*(\w+) and (?:a|an|the)?\s*(\w+)$", s)
+    pair = g.PAIR_NAMES.match(s)
     if pair:
         names.update({pair.group(1): 0, pair.group(2): 1})
         return [0, 1]
