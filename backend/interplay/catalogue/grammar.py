@@ -10,6 +10,7 @@ No phrase table lives here: what an action is called comes from `actions.toml`.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from functools import lru_cache
 
 _WORD_CHARS = frozenset("abcdefghijklmnopqrstuvwxyz0123456789'é")
@@ -273,6 +274,40 @@ WHO_ANSWERS = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
 TAKE_TURNS = re.compile(r"\b(?:take|takes|taking)\s+turns?\s+(?:at\s+)?(\w+ing)\b")
 COPIES_THE_OTHER = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"
                    r"\s+((?:\w+\s+)?)(?:movements?|moves|motions?|gestures?)(?P<rest>.*)$")
+
+
+_OTHER_SUBJECT = r"the\s+other(?:\s+(?:one|person))?|the\s+second(?:\s+(?:one|person))?|the\s+follower"
+
+
+@dataclass(frozen=True)
+class TwoPeople:
+    """Who does what to whom (planner/pair/roles.py), around the people's nouns."""
+    partner: re.Pattern          # the partner as an object: "the other", "him", "the woman", "her partner"
+    partner_owns: re.Pattern     # … followed by 's
+    subject: re.Pattern          # a clause's one subject and the rest (groups subj, rest)
+    coordinated: re.Pattern      # "waves, and the other waves back" (groups head, word, answer)
+    named: re.Pattern            # "a woman" (group 1: the noun)
+    done_to: re.Pattern          # "pushes (at) the other …" (groups verb, rest)
+    plural_subject: re.Pattern   # "they ", "the two friends " at the start
+
+
+@lru_cache(maxsize=4)
+def two_people(nouns: tuple[str, ...]) -> TwoPeople:
+    """The two-person patterns for these nouns (compiled once per noun list)."""
+    n = "|".join(nouns)
+    partner = (rf"(?:the\s+other(?:\s+(?:one|person))?|him|her(?!\s+(?:{n})\b)|them|"
+               rf"(?:a|an|the|his|her|their)\s+(?:{n}))")
+    return TwoPeople(
+        partner=rx(rf"\b{partner}\b"), partner_owns=rx(rf"\b{partner}(?='s)"),
+        subject=rx(rf"^(?P<subj>one(?:\s+(?:of\s+them|person))?|someone|a\s+person|he|she|"
+                   rf"the\s+(?:first|second|leader|follower)(?:\s+(?:one|person))?|"
+                   rf"(?:a|an|the)\s+(?:{n}))\s+(?P<rest>.+)$"),
+        coordinated=rx(rf"^(?P<head>.+?)(?:\s*,\s*|\s+)(?:and\s+|while\s+|as\s+|whereas\s+|but\s+)?"
+                       rf"(?P<word>and\s+|while\s+|as\s+|whereas\s+|but\s+|)?(?:{_OTHER_SUBJECT})\s+"
+                       rf"(?P<answer>\w+.*)$"),
+        named=rx(rf"\b(?:a|an|the|his|her|their)\s+({n})\b"),
+        done_to=rx(rf"^(?P<verb>\w+)\s+(?:(?:at|to|towards|with|on|into)\s+)?(?:{partner})\b(?P<rest>.*)$"),
+        plural_subject=rx(r"^(?:they|both(?:\s+of\s+them)?|two\s+\w+|the\s+(?:two|pair|couple)(?:\s+\w+)?)\s+"))
 
 
 # --- paths said in words (planner/trajectory_text.py) ---

@@ -21,11 +21,11 @@ turns" / "one after the other". Anything else is None: `people.actors` decides w
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from typing import Literal
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.phrases import one_space
 from interplay.catalogue.words import words
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose
 from interplay.planner.manner.travel import direction
@@ -34,17 +34,10 @@ from interplay.planner.segments import Step
 from interplay.planner.verbs import VERBS, lookup, third
 
 Response = Literal["with", "after", "contact"]
-_NOUNS = "|".join(sorted(SUBJECT_NOUNS | {"partner", "friend", "follower", "leader"}))
-# The partner as an object: "the other", "him", "the woman", "her partner".
-PARTNER = (rf"(?:the\s+other(?:\s+(?:one|person))?|him|her(?!\s+(?:{_NOUNS})\b)|them|"
-           rf"(?:a|an|the|his|her|their)\s+(?:{_NOUNS}))")
-_SUBJECT = g.rx(rf"^(?P<subj>one(?:\s+(?:of\s+them|person))?|someone|a\s+person|he|she|"
-                      rf"the\s+(?:first|second|leader|follower)(?:\s+(?:one|person))?|"
-                      rf"(?:a|an|the)\s+(?:{_NOUNS}))\s+(?P<rest>.+)$")
-_OTHER_SUBJECT = r"the\s+other(?:\s+(?:one|person))?|the\s+second(?:\s+(?:one|person))?|the\s+follower"
-_COORD = g.rx(rf"^(?P<head>.+?)(?:\s*,\s*|\s+)(?:and\s+|while\s+|as\s+|whereas\s+|but\s+)?"
-                    rf"(?P<word>and\s+|while\s+|as\s+|whereas\s+|but\s+|)?(?:{_OTHER_SUBJECT})\s+"
-                    rf"(?P<answer>\w+.*)$")
+# The people's nouns ("the woman", "her partner"); the sentence structure around them (the
+# partner as an object, a clause's subject, "…, and the other …") is grammar.py's.
+NOUNS = tuple(sorted(SUBJECT_NOUNS | {"partner", "friend", "follower", "leader"}))
+_ROLES = g.two_people(NOUNS)
 _CONTACT = {"push", "shove", "pull", "punch", "hit", "slap", "kick", "tackle", "bump", "poke",
             "touch", "grab", "tap", "nudge"}
 
@@ -83,9 +76,9 @@ class Exchange:
 
 def _partner_words(text: str) -> str:
     """"pushes the other" / "pushes him" → "pushes the other person"."""
-    text = re.sub(rf"\b{PARTNER}(?='s)", "the other person", text)
-    text = re.sub(rf"\b{PARTNER}\b", "the other person", text)
-    return re.sub(r"\s+", " ", text).strip(" ,")
+    text = _ROLES.partner_owns.sub("the other person", text)
+    text = _ROLES.partner.sub("the other person", text)
+    return " ".join(text.split()).strip(" ,")
 
 
 def _answer(text: str) -> tuple[str, bool]:
@@ -100,8 +93,8 @@ def _verb(text: str) -> str | None:
 
 
 def _who(subject: str, names: dict) -> int:
-    s = re.sub(r"\s+", " ", subject)
-    if SECOND.whole(s) or re.match(r"^the\s+follower", s):
+    s = one_space(subject)
+    if SECOND.whole(s) or (s[:3] == "the" and s[3:4].isspace() and s[3:].lstrip().startswith("follower")):
         return 1
     if FIRST.whole(s) or ONE.whole(s) or s in ("he", "she"):
         return 0
@@ -112,31 +105,30 @@ def exchange(text: str, names: dict) -> Exchange | None:
     """The exchange a clause describes (see the module docstring), or None."""
     t = g.TAKE_TURNS.sub(lambda m: f"{m.group(1)} in turn", text)
     if words("in_turn").search(t) and words("plural_subject").starts(t):
-        rest = re.sub(r"^(?:they|both(?:\s+of\s+them)?|two\s+\w+|the\s+(?:two|pair|couple)"
-                      r"(?:\s+\w+)?)\s+", "", words("in_turn").cut(t, ","))
+        rest = _ROLES.plural_subject.sub("", words("in_turn").cut(t, ","))
         hit = lookup(rest.split(" ", 1)[0])
         if hit is None:
             return None
         rest = third(hit[0].base) + rest[len(rest.split(" ", 1)[0]):]      # "bow" → "bows"
         return Exchange(0, {0: rest, 1: rest}, "after", f"roles: '{text}' → one after the other")
-    m = _SUBJECT.match(t)
+    m = _ROLES.subject.match(t)
     if m is None or words("each_other").search(t) or not (lookup(m.group("rest").split(" ", 1)[0])
                                                 or g.COPIES_THE_OTHER.match(m.group("rest"))):
         return None                  # both do it ("… wave at each other"), or no verb follows
     subject, rest = m.group("subj"), m.group("rest")
     first = _who(subject, names)
-    named = re.search(rf"\b(?:a|an|the|his|her|their)\s+({_NOUNS})\b", rest)
+    named = _ROLES.named.search(rest)
     if named and named.group(1) not in names:                # "… pushes a woman": the other one
         names[named.group(1)] = 1 - first
     who = g.WHO_ANSWERS.match(rest)
-    if who and re.search(rf"\b{PARTNER}\b", who.group("head")):
+    if who and _ROLES.partner.search(who.group("head")):
         head, (answer, _) = who.group("head"), _answer(who.group("answer"))
         verb = _verb(head)
         response: Response = "contact" if verb in _CONTACT else "after"
         return Exchange(first, {first: _partner_words(head), 1 - first: answer}, response,
                         f"roles: '{text}' → {first} {head}, then {1 - first} {answer} "
                         f"({'from the contact' if response == 'contact' else 'after it'})")
-    coord = _COORD.match(rest)
+    coord = _ROLES.coordinated.match(rest)
     if coord and lookup(coord.group("answer").split(" ", 1)[0]):
         head = coord.group("head")
         answer, answers = _answer(coord.group("answer"))
@@ -151,8 +143,7 @@ def exchange(text: str, names: dict) -> Exchange | None:
         lead_text = f"raises and lowers both {'legs' if what == 'leg' else 'arms'} slowly"
         return Exchange(1 - first, {1 - first: lead_text, first: _partner_words(rest)}, "with",
                         f"roles: '{text}' → {1 - first} leads, {first} copies")
-    obj = re.match(rf"^(?P<verb>\w+)\s+(?:(?:at|to|towards|with|on|into)\s+)?(?:{PARTNER})\b"
-                   rf"(?P<rest>.*)$", rest)
+    obj = _ROLES.done_to.match(rest)
     if obj is None:
         return None
     verb = _verb(obj.group("verb"))
