@@ -246,6 +246,14 @@ LEADING_WORD = re.compile(r"^(?:and|also|so|but|first(?:ly)?|at\s+first|to\s+sta
                    r"initially|then)\b[,\s]*")
 TIMES_SAID = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+times|"
                     r"(once|twice|thrice))\b")
+AGAIN_STILL = re.compile(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+")     # said again: out
+AND_SPLIT = re.compile(r"\s+and\s+")
+TO_VERB = re.compile(r"\s+to\s+(\w+)")                          # "stands up to jump"
+# "before X, Y" / "after X, Y" / "X before Y" / "X after Y": the two parts and the order they happen
+BEFORE_AFTER = ((re.compile(r"^(?:before|prior\s+to)\s+(.+?),\s*(.+)$"), (1, 0)),
+                (re.compile(r"^after\s+(?!that\b)(.+?),\s*(.+)$"), (0, 1)),
+                (re.compile(r"^(.+?)\s+(?:before|prior\s+to)\s+(.+)$"), (0, 1)),
+                (re.compile(r"^(.+?)\s+after\s+(?!that\b|wards?\b)(.+)$"), (1, 0)))
 LIGHT_CHAIN = re.compile(
     r"\b(start|starts|started|starting|begin|begins|began|beginning|keep|keeps|kept|keeping|"
     r"continue|continues|continued|continuing|try|tries|tried|trying|attempt|attempts|attempted|"

@@ -47,6 +47,16 @@ def tokens(text: str) -> list[Token]:
     return out
 
 
+def unquoted(text: str) -> str:
+    """Double quotes out, and single ones but an apostrophe between two letters ("don't")."""
+    letters = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+
+    def kept(i: int, c: str) -> bool:
+        inside = 0 < i < len(text) - 1 and text[i - 1] in letters and text[i + 1] in letters
+        return c != '"' and (c != "'" or inside)
+    return "".join(c for i, c in enumerate(text) if kept(i, c))
+
+
 def one_space(text: str) -> str:
     """Each run of spaces (tabs, line ends) as one space, the ends too ("  a  b " → " a b ")."""
     inner = " ".join(text.split())

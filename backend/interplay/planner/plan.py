@@ -20,10 +20,9 @@ With INTERPLAY_LLM_BASE_URL and INTERPLAY_LLM_MODEL set, `plan()` asks that mode
 from __future__ import annotations
 
 import math
-from string import ascii_letters
 
 from interplay.catalogue import grammar as g
-from interplay.catalogue.phrases import tokens
+from interplay.catalogue.phrases import tokens, unquoted
 from interplay.catalogue.words import words
 from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
@@ -42,14 +41,6 @@ MAX_PROMPT = 500
 IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
 # Postures a step can stay in ("kneels on one knee and stays there"); part verbs hold poses.
 _POSED = {"kneel", "squat", "crouch", "sit", "lie", "stand", "pose", "balance", "lean", "bend"}
-
-
-def _without_loose_quotes(text: str) -> str:
-    """Double quotes out, and single ones but an apostrophe between two letters ("don't")."""
-    def kept(i: int, c: str) -> bool:
-        inside = 0 < i < len(text) - 1 and text[i - 1] in ascii_letters and text[i + 1] in ascii_letters
-        return c != '"' and (c != "'" or inside)
-    return "".join(c for i, c in enumerate(text) if kept(i, c))
 
 
 def _without_subject(text: str) -> str:
@@ -176,7 +167,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
     need), or None to plan without similarity."""
     _check(prompt, persons, seconds)
     reasons: list[str] = []
-    text = _without_loose_quotes(" ".join(prompt.replace("’", "'").replace("“", '"').replace("”", '"').split()))
+    text = unquoted(" ".join(prompt.replace("’", "'").replace("“", '"').replace("”", '"').split()))
     if questions.is_question(text):
         sim = (lambda q, opts: vocabulary().similar(q, opts)) if vocabulary else None
         try:

@@ -18,9 +18,12 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import partial
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.grammar import COUNT_SAID
+from interplay.catalogue.phrases import Found, unquoted
+from interplay.catalogue.words import words as listed
 from interplay.planner.verbs import doing_nouns, gerund, lookup, noun_verb, third
 
 NUMBERS = {"once": 1, "one": 1, "twice": 2, "two": 2, "thrice": 3, "three": 3, "four": 4,
@@ -60,8 +63,8 @@ def _verb_in(word: str, like: str) -> str | None:
 
 # A user's imperative ("walk a few steps and wave") in the third person the rules read: the
 # verbs that open the prompt and each of its clauses, and "you" as the person.
-_YOU = ((r"\byourself\b", "themselves"), (r"\byour\b", "their"),
-        (r"\byou\s+(?=can|could|are|were|want|like|have)\b", "they "), (r"\byou\b", "them"))
+# (words.toml's list, what it becomes; "{2}": with the word after it), in this order
+_YOU = (("you_yourself", "themselves"), ("you_your", "their"), ("you_can", "they {2}"), ("you", "them"))
 
 
 def _imperative(t: str) -> str:
@@ -78,23 +81,29 @@ def _imperative(t: str) -> str:
     return g.CLAUSE_OPENS.sub(verb, t)
 
 
+def _you(new: str, found: Found) -> str:
+    return new.replace("{2}", found.text.split()[-1])          # "you can" → "they can"
+
+
 def normalize(text: str) -> str:
     """Lower case, present tense chains: "is running" → "runs", "starts hopping" → "hops",
     "transitions to sitting" → "sits", "gets up" / "rises to standing" → "stands up";
     imperatives in the third person ("walk, then sit" → "walks, then sits", "your" → "their")."""
     t = text.lower().replace("’", "'").replace("‘", "'").replace("“", '"').replace("”", '"')
-    t = re.sub(r"\"|(?<![a-z])'|'(?![a-z])", "", t)
-    for rx, word in _YOU:
-        t = re.sub(rx, word, t)
+    t = unquoted(t)
+    for said, new in _YOU:
+        t = listed(said).sub(t, partial(_you, new))
     t = _imperative(t.strip())
-    t = re.sub(r"\b(?:is|are|was|were|has\s+been|have\s+been)\s+(\w+ing)\b",
-               lambda m: _verb_in(m.group(1), "runs") or m.group(0), t)
-    t = re.sub(r"\b(get|gets|got|getting)\s+(?:back\s+)?up\b",
-               lambda m: ("standing" if m.group(1) == "getting" else "stands") + " up", t)
-    t = re.sub(r"\b(rise|rises|rose|rising)\s+to\s+(?:standing|(?:a\s+)?stand|(?:his|her|their)\s+feet)\b",
-               lambda m: ("standing" if m.group(1) == "rising" else "stands") + " up", t)
+    t = listed("progressive").sub(t, lambda found: _verb_in(found.text.split()[-1], "runs") or found.text)
+    t = listed("gets_up").sub(t, lambda found: _stands(found.text) + " up")
+    t = listed("rises_to_stand").sub(t, lambda found: _stands(found.text) + " up")
     t = g.LIGHT_CHAIN.sub(lambda m: _verb_in(m.group(2), m.group(1)) or m.group(0), t)
-    return re.sub(r"\s+", " ", t).strip()
+    return " ".join(t.split())
+
+
+def _stands(said: str) -> str:
+    """"getting up" → "standing", "gets up" → "stands" (the form of its first word)."""
+    return "standing" if said.split()[0].endswith("ing") else "stands"
 
 
 def _noun_to_verb(text: str) -> tuple[str, int]:
@@ -128,8 +137,8 @@ def _clean(piece: str) -> tuple[str, int]:
         if new == piece:
             break
         piece = new
-    piece = re.sub(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+", " ", piece)
-    piece = re.sub(r"\s+", " ", piece).strip(" ,")
+    piece = g.AGAIN_STILL.sub(" ", piece)
+    piece = " ".join(piece.split()).strip(" ,")
     first = piece.split(" ", 1)[0] if piece else ""
     hit = lookup(first)
     if hit and hit[1] == "gerund" and hit[0].kind != "light":    # "before jumping" → "jumps"
@@ -146,7 +155,10 @@ def _clean(piece: str) -> tuple[str, int]:
 
 def starts_action(text: str) -> bool:
     """Does this text begin with a (subject and a) finite verb, i.e. a new action?"""
-    words = re.sub(r"^(?:and|then|also)\s+", "", text.strip(" ,")).split()
+    stripped = text.strip(" ,")
+    head = next((w for w in ("and", "then", "also")
+                 if stripped.startswith(w) and stripped[len(w):len(w) + 1].isspace()), "")
+    words = stripped[len(head):].split()
     if not words:
         return False
     i, plural = 0, False
@@ -170,7 +182,7 @@ def starts_action(text: str) -> bool:
 
 
 def _split_and(fragment: str) -> list[str]:
-    parts = re.split(r"\s+and\s+", fragment)
+    parts = g.AND_SPLIT.split(fragment)
     out: list[str] = []
     for p in parts:
         if out and starts_action(p):
@@ -184,7 +196,7 @@ def _split_and(fragment: str) -> list[str]:
 
 def _split_to(text: str) -> list[str]:
     """"stands up to jump" → ["stands up", "jump"] when a whole-body verb follows "to"."""
-    m = re.search(r"\s+to\s+(\w+)", text)
+    m = g.TO_VERB.search(text)
     if m:
         hit = lookup(m.group(1))
         head = text[:m.start()].split()
@@ -196,11 +208,8 @@ def _split_to(text: str) -> list[str]:
 
 def _reorder(sentence: str) -> list[str]:
     """Pieces of a sentence in the order they happen ("before"/"after")."""
-    for rx, order in ((r"^(?:before|prior\s+to)\s+(.+?),\s*(.+)$", (1, 0)),
-                      (r"^after\s+(?!that\b)(.+?),\s*(.+)$", (0, 1)),
-                      (r"^(.+?)\s+(?:before|prior\s+to)\s+(.+)$", (0, 1)),
-                      (r"^(.+?)\s+after\s+(?!that\b|wards?\b)(.+)$", (1, 0))):
-        m = re.match(rx, sentence)
+    for rx, order in g.BEFORE_AFTER:
+        m = rx.match(sentence)
         if m:
             return [m.group(g + 1) for g in order]
     return [sentence]
@@ -246,6 +255,16 @@ def _act(phrase: str) -> str:
     return f"{third(verb)} {thing.get(obj[-1], ' '.join(obj)) if obj else ''}".strip()
 
 
+def _comma_parts(piece: str) -> list[str]:
+    """The piece split at its commas, without the spaces around them."""
+    parts = piece.split(",")
+    out = []
+    for i, part in enumerate(parts):
+        part = part.lstrip() if i > 0 else part
+        out.append(part.rstrip() if i < len(parts) - 1 else part)
+    return out
+
+
 def split(text: str) -> list[Clause]:
     """Ordered clauses of a normalised prompt."""
     pieces: list[str] = []
@@ -255,7 +274,7 @@ def split(text: str) -> list[Clause]:
     clauses: list[Clause] = []
     for piece in pieces:
         fragments: list[str] = []
-        for frag in re.split(r"\s*,\s*", piece):
+        for frag in _comma_parts(piece):
             for k, sub in enumerate(_split_and(frag)):
                 if k == 0 and fragments and not starts_action(sub):
                     fragments[-1] += ", " + sub      # a modifier of the previous action
