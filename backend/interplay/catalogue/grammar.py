@@ -43,6 +43,12 @@ def words_rx(words, not_before=()) -> re.Pattern:
     return rx(words_source(tuple(words), tuple(not_before)), re.IGNORECASE)
 
 
+def any_words_rx(entries: tuple[tuple[tuple[str, ...], tuple[str, ...]], ...]) -> re.Pattern:
+    """One pattern for several entries' word forms, each with the words it may not go on with."""
+    return rx("|".join(f"(?:{words_source(forms, not_before)})" for forms, not_before in entries)
+              or r"(?!x)x", re.IGNORECASE)
+
+
 def names_source(names, followed_by=()) -> str:
     """Set phrases of a gesture or pose, longest first: words joined by a space, a hyphen, a
     comma or nothing ("t pose" is also "t-pose" and "tpose"), each may take a possessive 's."""

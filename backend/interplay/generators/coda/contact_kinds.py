@@ -20,12 +20,12 @@ Shapes: joints (T, 22, 3) metres, Y up; targets (T, 3).
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
+from interplay.catalogue.words import words
 from interplay.motion import skeleton as sk
 from interplay.motion.pair import placement as pl
 from interplay.motion.pair.body import HAND_SPHERES, SPHERE_FRACTION, SPHERE_RADII, body_scale
@@ -40,16 +40,11 @@ SMOOTH = 5                                         # frames
 PUSH_ANGLE = np.radians(35.0)                      # each hand this far round the chest
 WALK_REACH = 0.85                                  # share of the arm held hands may use
 
-# Detection, first match wins (held hands before "hand", push not "push-ups"); each pattern is
-# also a contact verb of the reviewer (review_checks.CONTACT_VERBS).
-_PATTERNS = (
-    ("walk_side_by_side", r"\b(hold\w*|held|join\w*) hands\b|\bhand in hand\b"),
-    ("handshake", r"\bshak\w* hands?\b|\bhandshakes?\b"),
-    ("high_five", r"\bhigh[\s-]?fiv\w*"),
-    ("hug", r"\bhug\w*|\bembrac\w*"),
-    ("push", r"\bpush(?![\s-]?ups?\b)\w*|\bshov\w*"),
-)
-KINDS = tuple(k for k, _ in _PATTERNS)
+# Detection, first said wins (held hands before "hand", push not "push-ups"): words.toml's
+# lists, each also a contact of the reviewer (review_contact).
+_SAID = (("walk_side_by_side", "contact_held_hands"), ("handshake", "contact_handshake"),
+         ("high_five", "contact_high_five"), ("hug", "contact_hug"), ("push", "contact_push"))
+KINDS = tuple(k for k, _ in _SAID)
 
 # Timing (seconds), from compose.py's pl.timing calls: lead (earliest, latest) between the end
 # of the ramp in and the touch, hold, ramp in/out (the middle of the composer's ranges).
@@ -68,8 +63,9 @@ POLES = {"handshake": (0.15, 0.4, 0.1), "high_five": (0.3, 0.3, 0.0), "hug": (0.
 
 def contact_kind(text: str | None) -> str | None:
     """The contact kind a prompt asks for (KINDS), or None (no touch, e.g. a wave)."""
-    for kind, pattern in _PATTERNS:
-        if text and re.search(pattern, text, re.I):
+    for kind, said in _SAID:
+        if text and any(not words("push_ups", ignore_case=True).starts(text, found.start)
+                        for found in words(said, ignore_case=True).finditer(text)):
             return kind
     return None
 

@@ -72,8 +72,7 @@ def _words(entries) -> re.Pattern:
     entries = list(entries)
     key = tuple(a.name for a in entries)
     if key not in _PATTERNS:
-        _PATTERNS[key] = g.rx("|".join(f"(?:{g.words_source(_forms_of(a), tuple(a.not_before))})"
-                                       for a in entries if _forms_of(a)) or r"(?!x)x", re.IGNORECASE)
+        _PATTERNS[key] = g.any_words_rx(tuple((_forms_of(a), tuple(a.not_before)) for a in entries if _forms_of(a)))
     return _PATTERNS[key]
 
 
