@@ -64,11 +64,13 @@ def _entry_primitive(seg: GenerationSegment) -> str | None:
 
 def _generic_verb(seg: GenerationSegment) -> bool:
     """Words read as a catalogue verb (not a gesture) with no captured family named, not a way
-    of travelling: its captures are whatever the words find."""
+    of travelling, not a change of posture ("lies down" is shown going down, not lying there):
+    its captures are whatever the words find."""
     cov = seg.coverage
     entry = catalogue().get(cov.entry) if cov is not None and cov.entry else None
     return (entry is not None and cov is not None and cov.how == "capture" and
-            entry.kind in ("whole", "part") and not entry.made_by.families and not entry.names)
+            entry.kind in ("whole", "part") and not entry.made_by.families and not entry.names
+            and not (entry.posture or entry.ends_in))
 
 
 def _activity_over_verb(seg: GenerationSegment, encoder) -> tuple[Primitive, float] | None:
