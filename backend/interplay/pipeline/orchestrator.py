@@ -26,6 +26,7 @@ from interplay.catalogue.load import catalogue
 from interplay.catalogue.schema import specs
 from interplay.generators.base import Editor, Generator, Request
 from interplay.generators.plan import GenerationPlan, GenerationSegment
+from interplay.generators.primitives.registry import PRIMITIVES
 from interplay.generators.retrieval.intent import intent
 from interplay.generators.retrieval.verify import checks as asked_checks
 from interplay.motion.kinematics import continue_from
@@ -200,6 +201,18 @@ def orchestrate(generator: Generator, req: Request, emit: Callable[[dict], None]
         raise StageError(stage, f"{type(exc).__name__}: {exc}") from exc
 
 
+# A primitive's base posture (generators/primitives/postures.NAMES) as the posture the
+# benchmark's checks read at its first frame; standing and a walk start standing.
+PRIMITIVE_START = {"prone": "lying", "supine": "lying", "floor": "sitting", "kneeling": "kneeling",
+                   "all_fours": "all_fours", "seated": "low"}
+
+
+def _primitive_start(seg: GenerationSegment) -> str | None:
+    cov = seg.coverage
+    prim = PRIMITIVES.get(cov.primitive or "") if cov is not None and cov.how == "primitive" else None
+    return PRIMITIVE_START.get(prim.posture) if prim is not None else None
+
+
 def asked_of(seg: GenerationSegment) -> list[dict]:
     """The benchmark's checks (specs for `run_check`) that one person's segment words imply:
     the retrieval's reading of them (`retrieval.intent`, `retrieval.verify.checks`); the first
@@ -207,6 +220,10 @@ def asked_of(seg: GenerationSegment) -> list[dict]:
     the checks the catalogue gives the entry its words were read as (`coverage.entry`)."""
     it = intent(seg.prompt, seg.repeat, seg.travel)
     out = asked_checks(it, it.start, it.end, first=seg.index == 0)
+    start = _primitive_start(seg)
+    if start is not None:           # a primitive starts in its own base posture (crunches: lying)
+        out = [{**spec, "posture": start} if spec["check"] == "posture_at_start" else spec
+               for spec in out]
     if it.hold is not None:         # a held pose: held at least 1 s (less of a short segment)
         held = round(min(1.0, 0.4 * (seg.end - seg.start) / 20), 2)
         out.append({"check": "still"} if it.hold == "still" else
