@@ -89,10 +89,25 @@ def _activity_over_verb(seg: GenerationSegment, encoder) -> tuple[Primitive, flo
     prim, sim = find(text, encoder, acts)
     if sim < ACTIVITY_SIM:
         return None
-    emb = np.asarray(encoder.encode([text, *(entry.descriptions or [entry.name])]), dtype=np.float64)
-    emb /= np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12)
-    own = float((emb[1:] @ emb[0]).max())
+    own = float((_described(encoder, tuple(entry.descriptions or [entry.name])) @ _unit(encoder, text)).max())
     return (prim, sim) if sim - own >= ACTIVITY_MARGIN else None
+
+
+def _unit(encoder, text: str) -> np.ndarray:
+    v = np.asarray(encoder.encode([text]), dtype=np.float64)[0]
+    return v / max(float(np.linalg.norm(v)), 1e-12)
+
+
+_DESCRIBED: dict[tuple[int, tuple[str, ...]], tuple[object, np.ndarray]] = {}
+
+
+def _described(encoder, texts: tuple[str, ...]) -> np.ndarray:
+    """Unit embeddings (K, D) of an entry's descriptions, once per encoder."""
+    key = (id(encoder), texts)
+    if key not in _DESCRIBED or _DESCRIBED[key][0] is not encoder:
+        emb = np.asarray(encoder.encode(list(texts)), dtype=np.float64)
+        _DESCRIBED[key] = (encoder, emb / np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12))
+    return _DESCRIBED[key][1]
 
 
 def _said(seg: GenerationSegment) -> list[str]:
