@@ -98,12 +98,6 @@ def one_rx(nouns) -> re.Pattern:
               rf"(?:{singular})\b")
 
 
-# --- sides and limbs ---
-LIMB = r"(?:leg|foot|feet|knee|arm|hand|fist|elbow|shoulder)s?"
-SIDE = re.compile(rf"\b(left|right)(?:[\s-]+(?:hand(?:ed)?|footed))?\s+{LIMB}\b|"
-                  rf"\b(left|right)[\s-]+(?:handed|footed)\b")
-
-
 def words_of(text: str) -> list[str]:
     """Lower-case words of a text (letters a to z, digits, apostrophes, é)."""
     return "".join(c if c in _WORD_CHARS else " " for c in text.lower()).split()
@@ -157,7 +151,22 @@ def held_rx(words) -> re.Pattern:
 # "arm* [held|stretched] out to (the|his|her) side*": words in order; `*` any ending; (a|b) one
 # of; [a|b] one of or none; `...` any words between (within the text); `~3` up to three words;
 # a trailing `!(a|b)` says the phrase may not go on with those words.
-_TOKEN = re.compile(r"!?\([^)]*\)|\[[^\]]*\]|\S+")
+
+
+def _template_tokens(template: str) -> list[str]:
+    """A template's parts: "(a|b)", "!(a|b)", "[a b]" (spaces inside), else runs of non-spaces."""
+    out, i = [], 0
+    while i < len(template):
+        if template[i].isspace():
+            i += 1
+            continue
+        opening = "(" if template.startswith("!(", i) or template[i] == "(" else "[" if template[i] == "[" else ""
+        close = template.find(")" if opening == "(" else "]", i) if opening else -1
+        if close < 0:
+            close = next((j for j in range(i, len(template)) if template[j].isspace()), len(template)) - 1
+        out.append(template[i:close + 1])
+        i = close + 1
+    return out
 
 
 def _alts(body: str) -> str:
@@ -168,7 +177,7 @@ def _alts(body: str) -> str:
 def template_source(template: str) -> str:
     """The regular expression of one template (see above)."""
     src, tail, glue = "", "", ""            # glue: what joins the next word to the source
-    for tok in _TOKEN.findall(template):
+    for tok in _template_tokens(template):
         if tok.startswith("!("):
             tail = rf"(?!\s+(?:{_alts(tok[2:-1])})\b)"
             continue
@@ -248,8 +257,6 @@ CONNECTIVE = re.compile(
     r"and\s+next|after\s+that|afterwards?|then|next(?!\s+to)|finally|lastly|subsequently|"
     r"followed\s+by|and\s+later|later\s+on|later|in\s+the\s+end|"
     r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
-LEADING_WORD = re.compile(r"^(?:and|also|so|but|first(?:ly)?|at\s+first|to\s+start|to\s+begin\s+with|"
-                   r"initially|then)\b[,\s]*")
 TIMES_SAID = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+times|"
                     r"(once|twice|thrice))\b")
 AGAIN_STILL = re.compile(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+")     # said again: out
@@ -342,7 +349,6 @@ TRAVEL_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
                    r"(?<!the\s)(?<!their\s)(?<!his\s)(?<!her\s)(?<!its\s)(?<!your\s)\bback\b"
                    r"(?!\s+(?:up|to|towards?|home|and\s+forth|into|in\b|at\b|on\b|down|where|"
                    r"from|of\b|onto|inside|over))")
-TRAVEL_SIDE = re.compile(r"\b(?:to(?:wards)?\s+(?:the|their|his|her|your)\s+|to\s+)?(left|right)(?:wards?)?\b")
 
 
 # --- held poses (planner/manner/holds.py) ---

@@ -133,7 +133,11 @@ def _noun_to_verb(text: str) -> tuple[str, int]:
 def _clean(piece: str) -> tuple[str, int]:
     piece = piece.strip(" ,.;:!?")
     while True:
-        new = g.LEADING_WORD.sub("", piece).strip(" ,")
+        lead = listed("leading_word").starts(piece)
+        rest = piece[lead.end:] if lead else piece
+        while lead and rest[:1] and (rest[0] == "," or rest[0].isspace()):
+            rest = rest[1:]
+        new = rest.strip(" ,")
         if new == piece:
             break
         piece = new

@@ -149,7 +149,7 @@ def travel_of(prompt: str) -> str | None:
 def side_of(prompt: str) -> str | None:
     """The side of the limb a prompt names ("with the right leg", "your left fist"), if it
     names one side only."""
-    sides = {a or b for a, b in g.SIDE.findall(prompt.lower())}
+    sides = {f.text.split()[0].split("-")[0] for f in words("limb_side").finditer(prompt.lower())}
     return sides.pop() if len(sides) == 1 else None
 
 

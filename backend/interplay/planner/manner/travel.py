@@ -16,7 +16,7 @@ forward and moves backwards; `untangle` drops a straight path that only restates
 from __future__ import annotations
 
 from interplay.catalogue import grammar as g
-from interplay.catalogue.words import words
+from interplay.catalogue.words import tokens, words
 from interplay.planner.schema import TrajectorySpec, Travel
 from interplay.planner.verbs import Verb
 
@@ -27,6 +27,8 @@ MOVING = {"jump", "leap", "stumble", "step", "lunge", "slide", "dodge", "roll", 
 LATERAL = {"step", "shuffle", "hop", "jump", "leap", "slide", "dodge", "lunge", "skip"}
 
 
+_SIDES = {"left", "leftward", "leftwards", "right", "rightward", "rightwards"}
+
 def direction(text: str, verb: Verb | None) -> Travel | None:
     """The direction of travel a clause states for its body, or None (not stated, or a body
     that does not travel)."""
@@ -35,9 +37,9 @@ def direction(text: str, verb: Verb | None) -> Travel | None:
     t = text.lower()
     if g.TRAVEL_BACK.search(t):
         return "backward"
-    side = g.TRAVEL_SIDE.search(t)
+    side = next((w.text for w in tokens(t) if w.text in _SIDES), None)     # "to the left", "leftwards"
     if side and (words("sideways").search(t) or verb.base in LATERAL):
-        return "left" if side.group(1) == "left" else "right"
+        return "left" if side.startswith("left") else "right"
     if words("sideways").search(t):
         return "left"            # "steps sideways", side unsaid: one side, said in `reasons`
     if words("forward").search(t):
