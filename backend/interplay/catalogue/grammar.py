@@ -215,9 +215,6 @@ WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+
 CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
 STRIKING_WHILE = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
                             re.IGNORECASE)
-# "…, then the right": a clause that only names a side.
-SIDE_ONLY = re.compile(r"^(?:and\s+|then\s+)*(?:with\s+|using\s+)?(?:the\s+)?(left|right)"
-                       r"(?:\s+(?:one|fist|hand|arm|leg|foot|side))?$")
 
 
 def one_action_rx(countable) -> re.Pattern:
@@ -292,7 +289,6 @@ CLAUSE_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|
 # --- two people's sentence structure (planner/pair/roles.py, actors.py) ---
 PAIR_NAMES = re.compile(r"^(?:a|an|the)?\s*(\w+) and (?:a|an|the)?\s*(\w+)$")       # "the man and the woman"
 WHO_ANSWERS = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
-TAKE_TURNS = re.compile(r"\b(?:take|takes|taking)\s+turns?\s+(?:at\s+)?(\w+ing)\b")
 COPIES_THE_OTHER = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"
                    r"\s+((?:\w+\s+)?)(?:movements?|moves|motions?|gestures?)(?P<rest>.*)$")
 

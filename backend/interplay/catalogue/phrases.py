@@ -6,7 +6,7 @@ into words once (a word is a run of letters, digits and underscores, what a regu
       → Found(start=0, end=13, text='shaking hands')
 
 A phrase is written in the catalogue's template notation: words in order; `*` in a word any
-letters there ("hug*": hug, hugs, hugging; "*greet*": greets, regreet); `*` alone any one word;
+letters there ("hug*": hug, hugs, hugging; "*greet*": greets, regreet), a leading `?` one; `*` alone any one word;
 `(a|b c)` one of; `[a|b]` one of or none; `[a|b]*` any number of them; `~3` up to three words between; `...` any words and
 marks between; and at the end `!(a|b)`: the phrase may not go on with these. Words are joined
 by spaces in the text; a hyphen in a phrase's word ("high-five") takes spaces or hyphens there,
@@ -124,7 +124,10 @@ def parse(template: str) -> list[Slot]:
 
 
 def _same(word: str, token: str) -> bool:
-    """Whether a token is the word; a `*` in the word stands for any letters ("hug*", "*ing*")."""
+    """Whether a token is the word; a `*` in the word stands for any letters ("hug*", "*ing*"),
+    a leading `?` for one ("?*ing": a word ending in "ing" after at least one letter)."""
+    if word.startswith("?"):
+        return bool(token) and _same(word[1:], token[1:])
     if "*" not in word:
         return token == word
     head, *middle, tail = word.split("*")

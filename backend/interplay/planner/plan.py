@@ -123,11 +123,11 @@ def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) 
 
 def _other_side(clause, before: Action, reasons: list[str]) -> None:
     """A clause that only names a side after an action with one: that action, on this side."""
-    m = g.SIDE_ONLY.match(clause.text.strip())
+    only = clause.text.strip()
     said = next((t for t in tokens(before.text) if t.text in ("left", "right")), None)
-    if m is None or said is None:
+    if not words("side_only").whole(only) or said is None:
         return
-    side = m.group(1)
+    side = next(t.text for t in tokens(only) if t.text in ("left", "right"))
     text = before.text[:said.start] + side + before.text[said.end:]
     reasons.append(f"ellipsis: '{clause.text}' is '{text}' (the action before, on the {side})")
     clause.text = text

@@ -103,7 +103,7 @@ def _who(subject: str, names: dict) -> int:
 
 def exchange(text: str, names: dict) -> Exchange | None:
     """The exchange a clause describes (see the module docstring), or None."""
-    t = g.TAKE_TURNS.sub(lambda m: f"{m.group(1)} in turn", text)
+    t = words("take_turns").sub(text, lambda found: f"{found.text.split()[-1]} in turn")
     if words("in_turn").search(t) and words("plural_subject").starts(t):
         rest = _ROLES.plural_subject.sub("", words("in_turn").cut(t, ","))
         hit = lookup(rest.split(" ", 1)[0])
