@@ -90,6 +90,13 @@ def interaction_specs(plan: GenerationPlan) -> list[dict]:
     return out
 
 
+# An interaction the words do not name but the text encoder read from its nearest description
+# passes its kind's checks without confirming the words unless that description is a near
+# paraphrase (cosine ≥ SURE_GUESS, the bound a primitive needs over a captured verb): below it
+# the verdict is `unconfirmed`, not `ok`.
+SURE_GUESS = 0.8
+
+
 def _bounds_ok(people: np.ndarray, plan: GenerationPlan) -> bool:
     return all(pair_bounds(people[0, s.start:s.end], people[1, s.start:s.end],
                            contact_mode(s.prompt))["ok"]
@@ -105,11 +112,18 @@ def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray
                      "reason": "the two do not do what was asked: "
                                + "; ".join(w for _, w in missed)}] if missed else []
     n = len(specs)
+    checks: dict = {"failed": failed, "windows": [], "metrics": {}}
+    guess = ((plan.composition or {}).get("script") or {}).get("guessed")
+    verdict = "correct" if missed else "ok"
+    if verdict == "ok" and guess is not None and guess < SURE_GUESS:
+        verdict = "unconfirmed"
+        checks["unconfirmed"] = (f"the interaction was read by the text encoder ({guess:.2f} to "
+                                 "its nearest description), not named: its checks test that reading")
     return {"type": "review", "segment": plan.segments[-1].index, "round": r,
             "captions": {}, "summary": f"interaction checks: {n - len(missed)} of {n} passed",
             "score": round((n - len(missed)) / n, 4), "score_kind": "interaction_checks",
-            "confirmed": {}, "checks": {"failed": failed, "windows": [], "metrics": {}},
-            "instructions": instructions, "verdict": "correct" if missed else "ok"}, n - len(missed)
+            "confirmed": {}, "checks": checks,
+            "instructions": instructions, "verdict": verdict}, n - len(missed)
 
 
 def _made(generator: Generator, req: Request, seed: int) -> tuple[GenerationPlan, np.ndarray]:

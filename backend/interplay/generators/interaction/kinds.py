@@ -91,12 +91,15 @@ class Script:
     held: bool = False
     reasons: tuple[str, ...] = field(default_factory=tuple)
     part: str | None = None     # touch: the partner's part the hand goes to
+    guessed: float | None = None  # read by the text encoder, not the words: its cosine
 
     def to_json(self) -> dict:
         out = {"kind": self.kind, "actor": self.actor, "approach": self.approach,
                "held": self.held, "reasons": list(self.reasons)}
         if self.part is not None:
             out["part"] = self.part
+        if self.guessed is not None:
+            out["guessed"] = self.guessed
         return out
 
 
@@ -158,6 +161,12 @@ def _prototypes() -> list[tuple[str | None, str]]:
 
 def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
     """(kind, reason) by the nearest prototype description, or (None, why not)."""
+    kind, why, _ = _encoder_read(prompt, encoder)
+    return kind, why
+
+
+def _encoder_read(prompt: str, encoder) -> tuple[str | None, str, float]:
+    """(kind or None, reason, cosine to the nearest prototype description)."""
     protos = _prototypes()
     texts = [t for _, t in protos]
     emb = np.asarray(encoder.encode(texts + [prompt]))
@@ -165,10 +174,10 @@ def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
     best = int(np.argmax(sims))
     kind, text, sim = protos[best][0], texts[best], float(sims[best])
     if kind is None:
-        return None, f"nearest description '{text}' ({sim:.2f}) is not one this generator composes"
+        return None, f"nearest description '{text}' ({sim:.2f}) is not one this generator composes", sim
     if sim < MIN_SIMILARITY:
-        return None, f"nearest description '{text}' is only {sim:.2f} similar (< {MIN_SIMILARITY})"
-    return kind, f"the text encoder: nearest description '{text}' ({sim:.2f})"
+        return None, f"nearest description '{text}' is only {sim:.2f} similar (< {MIN_SIMILARITY})", sim
+    return kind, f"the text encoder: nearest description '{text}' ({sim:.2f})", sim
 
 
 def _starts(kind: str, text: str) -> bool:
@@ -237,8 +246,9 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
     generator composes (the reasons are then in `why_not`)."""
     kind, why = keyword_kind(prompt)
     reasons = [why]
+    guessed = None
     if kind is None and encoder is not None and not _match(_NOT_MINE, prompt):
-        kind, why = encoder_kind(prompt, encoder)
+        kind, why, guessed = _encoder_read(prompt, encoder)
         reasons.append(why)
     if kind is None:
         return None
@@ -255,7 +265,8 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
         reasons.append("hands held")
     if kind in _RESPONDER:
         reasons.append(who)
-    return Script(kind, actor, approach, held, tuple(reasons), part)
+    return Script(kind, actor, approach, held, tuple(reasons), part,
+                  None if guessed is None else round(guessed, 4))
 
 
 def kind_checks(kind: str) -> list[dict]:
