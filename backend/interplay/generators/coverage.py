@@ -16,6 +16,10 @@ from interplay.generators.plan import GenerationPlan, GenerationSegment
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.planner.schema import Coverage
 
+# Kinds whose people each play their own words (one-person generator): the words, not the
+# kind, say whether the segment is covered.
+SOLO_KINDS = ("together", "face_to_face")
+
 
 def _best_piece(seg: GenerationSegment):
     pieces = [p for t in (seg.retrieval.tracks if seg.retrieval else []) for p in t]
@@ -37,10 +41,10 @@ def cover(plan: GenerationPlan, index: RetrievalIndex | None = None) -> None:
     for seg in plan.segments:
         cov = seg.coverage or Coverage(how="capture", similarity=1.0)
         # A composed scene covers the segment whatever the planner read in its words (the
-        # kind was found by its entry's words or descriptions), except "together", which plays
-        # each person's own part through the one-person generator.
+        # kind was found by its entry's words or descriptions), except the kinds that play
+        # each person's own part through the one-person generator (SOLO_KINDS)
         kind = (plan.composition or {}).get("kind")
-        if plan.generator == "compose" and kind and (cov.how != "nearest" or kind != "together"):
+        if plan.generator == "compose" and kind and (cov.how != "nearest" or kind not in SOLO_KINDS):
             cov = cov.model_copy(update={"how": "composed", "entry": kind})
         best = _best_piece(seg)
         if best is not None and cov.how in ("nearest", "capture") and cov.entry is None:

@@ -27,7 +27,7 @@ from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
 from interplay.generators.interaction import contest, gestures, partners, piggyback, touches, travel
 from interplay.generators.interaction.bodies import SHARED
-from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, read_script, why_not
+from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, fallback, read_script, why_not
 from interplay.generators.interaction.library import Library
 from interplay.generators.interaction.scene import Cast, finish
 from interplay.generators.plan import GenerationPlan, Source
@@ -49,7 +49,7 @@ BUILDERS = {
     "one_stops": travel.one_stops, "side_by_side": travel.side_by_side, "approach": travel.approach,
     "together": gestures.together, "help_up": partners.help_up, "spar": contest.spar,
     "hand_over": partners.hand_over, "touch": partners.touch, "chase": contest.chase,
-    "carry": piggyback.piggyback, "lead": travel.lead,
+    "carry": piggyback.piggyback, "lead": travel.lead, "face_to_face": gestures.face_to_face,
 }
 START = {"help_up": "any"}     # the one helped up starts on the floor
 FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)
@@ -120,7 +120,7 @@ class InteractionGenerator:
             return self._fallback(req, seed, "composes two people only")
         base = make_plan(req.prompt, 2, req.seconds)
         roles = _roles(base)
-        script = read_script(req.prompt, roles, self.index.encoder)
+        script = read_script(req.prompt, roles, self.index.encoder) or fallback(req.prompt, self.index.encoder)
         if script is None:
             return self._fallback(req, seed, f"no interaction it composes ({why_not(req.prompt, self.index.encoder)})")
         try:

@@ -14,14 +14,21 @@ from interplay.catalogue import grammar as g
 from interplay.catalogue.words import words
 from interplay.generators.interaction.bodies import extend, facing_pair, on_shared, refit, turn_to
 from interplay.generators.interaction.scene import Cast, clear
+from interplay.motion import skeleton as sk
 from interplay.motion.checks import measures as m
 from interplay.motion.clip import Clip
+from interplay.motion.kinematics import facing_angle
 from interplay.motion.pair.bases import face_forward
 from interplay.motion.pair.windows import mirror as mirrored
+from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import FPS
 
 MIRROR_LAG = 1         # frame (0.05 s) the mirroring person trails the leader
 TOGETHER_GAP_M = (1.0, 1.3)   # side by side, pelvis to pelvis, both doing the same action
+FACE_GAP_M = (1.0, 1.3)       # face to face, pelvis to pelvis: across a small table
+FACE_DRAWS = 3                # draws of each person's words; the one that stays put is kept …
+FACE_WANDER_M = 0.6           # … and one still wandering further is held on its spot,
+FACE_TURN_DEG = 45.0          # one turning further from its mean heading turned back to it
 TOGETHER_LAG = 2              # frames the second trails the first when both play one clip
 
 
@@ -148,6 +155,63 @@ def together(c: Cast) -> list[np.ndarray]:
                             "counts": [counts0, counts1], "same_clip": same_clip,
                             "shift_frames": shift}
     return [a, b]
+
+
+def face_to_face(c: Cast) -> list[np.ndarray]:
+    """Each does their own part of the words (their role, made by the one-person generator,
+    `Cast.solo`, another seed each), the two facing each other FACE_GAP_M apart, moved apart
+    where the bodies would meet: two people at something together that no kind names
+    (chatting, a board game, feeding, teaching)."""
+    if c.solo is None:
+        raise ValueError("no one-person generator to play each person's part")
+    seed = int(c.rng.integers(2**31))
+    people = []
+    for person in (0, 1):
+        # the draw of the words that keeps its spot and heading best (a nearest clip may walk off)
+        draws = [c.solo(solo_text(c.texts[person]), seed + 7919 * person + 104729 * k)
+                 for k in range(FACE_DRAWS)]
+        joints, sources = min(draws, key=lambda d: _unsettled(np.asarray(d[0])[:c.frames]))
+        j = refit(np.asarray(joints, np.float64)[:c.frames])
+        if _wander(j) > FACE_WANDER_M:        # still off: kept on its spot …
+            j = j - (j[:, sk.PELVIS] - j[:1, sk.PELVIS])[:, None] * np.array([1.0, 0.0, 1.0])
+        j = _steady(j)                         # … and its heading
+        people.append(j)
+        for src in sources:
+            c.source(person, {**src, "mirrored": False}, "face to face")
+    gap = float(c.rng.uniform(*FACE_GAP_M))
+    a, b = facing_pair(people[0], people[1], gap)
+    b, moved = clear(a, b)
+    c.report["face_to_face"] = {"texts": [solo_text(t) for t in c.texts], "gap_m": round(gap + moved, 3),
+                                "seed": seed}
+    return [a, b]
+
+
+def _wander(joints: np.ndarray) -> float:
+    """How far (m) the pelvis gets on the floor from where it starts."""
+    d = (joints[:, sk.PELVIS] - joints[:1, sk.PELVIS])[:, [0, 2]]
+    return float(np.linalg.norm(d, axis=1).max())
+
+
+def _steady(joints: np.ndarray) -> np.ndarray:
+    """Joints turned back, frame by frame about the pelvis, to their mean heading where the
+    facing strays more than FACE_TURN_DEG from it (someone turning away from the partner)."""
+    a = facing_angle(joints)
+    mean = float(np.arctan2(np.sin(a).mean(), np.cos(a).mean()))
+    off = np.angle(np.exp(1j * (a - mean)))
+    if np.degrees(np.abs(off)).max() <= FACE_TURN_DEG:
+        return joints
+    pivot = joints[:, sk.PELVIS] * np.array([1.0, 0.0, 1.0])
+    rot = yaw_matrix(-off)                                   # (T, 3, 3)
+    return np.einsum("tij,tkj->tki", rot, joints - pivot[:, None]) + pivot[:, None]
+
+
+def _unsettled(joints: np.ndarray) -> float:
+    """How far a draw leaves its spot and its heading: metres wandered plus the facing's
+    largest turn from its mean (radians, as half a metre each): one facing a partner keeps both."""
+    a = facing_angle(np.asarray(joints, np.float64))
+    mean = np.arctan2(np.sin(a).mean(), np.cos(a).mean())
+    turn = float(np.abs(np.angle(np.exp(1j * (a - mean)))).max())
+    return _wander(joints) + 0.5 * turn
 
 
 def _events(joints: np.ndarray) -> tuple[tuple[int, int, int], int | None]:

@@ -23,7 +23,7 @@ from interplay.catalogue.load import catalogue, on_change
 # The kinds, in a fixed order (a scene's random draws are seeded by the kind's place here).
 KINDS = ("handshake", "high_five", "hug", "push", "wave", "wave_back", "bow", "mirror",
          "follow", "one_stops", "side_by_side", "approach", "together", "help_up", "spar",
-         "hand_over", "touch", "chase", "carry", "lead")
+         "hand_over", "touch", "chase", "carry", "lead", "face_to_face")
 CONTACT = ("handshake", "high_five", "hug", "push", "help_up", "hand_over", "touch", "carry",
            "lead")  # they touch
 APPROACHABLE = ("handshake", "high_five", "hug", "approach")
@@ -43,7 +43,7 @@ _APPROACH = tuple(f"{v} {to}" for v in ("walk*", "come*", "came", "run*", "ran",
 # The subject of "one stops": the stop counts after one of these, in the same sentence.
 _ONE = ("one", "the other", "one of them", "one person")
 # What the encoder's nearest description may be instead: prompts left to another generator.
-_OTHERS = ("two people dance together", "two people play a game", "two people sit down",
+_OTHERS = ("two people dance together", "two people sit down",
            "two people salute each other", "two people exercise", "two people clap")
 MIN_SIMILARITY = 0.6
 # Role words: who does the kind's first action (actor) and who responds.
@@ -165,6 +165,15 @@ def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
     return kind, why
 
 
+def _left_to_other(prompt: str, encoder) -> bool:
+    """The nearest description is one this generator leaves to another, near enough to count."""
+    protos = _prototypes()
+    emb = np.asarray(encoder.encode([t for _, t in protos] + [prompt]))
+    sims = emb[:-1] @ emb[-1]
+    best = int(np.argmax(sims))
+    return protos[best][0] is None and float(sims[best]) >= MIN_SIMILARITY
+
+
 def _encoder_read(prompt: str, encoder) -> tuple[str | None, str, float]:
     """(kind or None, reason, cosine to the nearest prototype description)."""
     protos = _prototypes()
@@ -267,6 +276,21 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
         reasons.append(who)
     return Script(kind, actor, approach, held, tuple(reasons), part,
                   None if guessed is None else round(guessed, 4))
+
+
+def fallback(prompt: str, encoder) -> Script | None:
+    """Two people whose words name no kind near enough, and that no other generator takes (a
+    dance, a jump, push-ups: the entries' `not mine` words; the nearest description one left
+    to another): each does their own part of the words, facing the other (`face_to_face`),
+    read as the weakest guess (its cosine to the nearest description)."""
+    if _match(_NOT_MINE, prompt):
+        return None
+    kind, why, sim = _encoder_read(prompt, encoder)
+    if kind is not None or _left_to_other(prompt, encoder):
+        return None
+    return Script("face_to_face", 0, False, False,
+                  (why, "no interaction named or near enough: each does their own part of the "
+                        "words, facing the other"), None, round(min(sim, MIN_SIMILARITY), 4))
 
 
 def kind_checks(kind: str) -> list[dict]:
