@@ -12,8 +12,9 @@ from __future__ import annotations
 import tomllib
 from functools import lru_cache
 from pathlib import Path
+from typing import Annotated
 
-from pydantic import BaseModel, ConfigDict, field_validator
+from pydantic import AfterValidator, BaseModel, ConfigDict, field_validator
 
 from interplay.catalogue.phrases import Found, Phrases, parse, tokens
 
@@ -23,49 +24,38 @@ PATH = Path(__file__).with_name("words.toml")
 TABLES = Path(__file__).with_name("tables.toml")         # questions, caption cues, held poses
 
 
+def _parsed(phrases: list[str]) -> list[str]:
+    """The phrases, each checked to parse (a ValueError names the one that does not)."""
+    for p in phrases:
+        parse(p)
+    return phrases
+
+
+PhraseList = Annotated[list[str], AfterValidator(_parsed)]
+
+
 class Question(BaseModel):
     """A question the planner answers with a motion: the phrases that say what it is about."""
     model_config = ConfigDict(extra="forbid")
-    keys: list[str]
+    keys: PhraseList
     answer: str
     about: str
-
-    @field_validator("keys")
-    @classmethod
-    def _keys_parse(cls, keys: list[str]) -> list[str]:
-        for k in keys:
-            parse(k)
-        return keys
 
 
 class Cue(BaseModel):
     """A planned text's words and the caption phrases that show it (review/agreement.py)."""
     model_config = ConfigDict(extra="forbid")
-    said: list[str]
+    said: PhraseList
     shown: list[str]
-
-    @field_validator("said")
-    @classmethod
-    def _said_parses(cls, said: list[str]) -> list[str]:
-        for p in said:
-            parse(p)
-        return said
 
 
 class Pose(BaseModel):
     """A pose held over a segment (planner/manner/holds.py): the words that name it, its
     instruction ("{side}": written per arm) and whether it is one action of both arms."""
     model_config = ConfigDict(extra="forbid")
-    said: list[str]
+    said: PhraseList
     instruction: str
     together: bool = False
-
-    @field_validator("said")
-    @classmethod
-    def _said_parses(cls, said: list[str]) -> list[str]:
-        for p in said:
-            parse(p)
-        return said
 
 
 class WordLists(BaseModel):
@@ -83,8 +73,7 @@ class WordLists(BaseModel):
         for name, phrases in lists.items():
             if not phrases:
                 raise ValueError(f"{name}: an empty list")
-            for p in phrases:
-                parse(p)                              # raises on a bracket left open
+            _parsed(phrases)                          # raises on a bracket left open
         return lists
 
 
