@@ -117,7 +117,7 @@ def words_of_file(path: str, text: str) -> set[str]:
     return words_of_source(text) if path.endswith(".py") else words_of_text(text)
 
 
-def _docstrings(tree: ast.AST) -> set[int]:
+def docstrings(tree: ast.AST) -> set[int]:
     """ids of the Constant nodes that are docstrings (first statement of a module, class or
     function body)."""
     out = set()
@@ -140,7 +140,7 @@ def words_of_text(text: str) -> set[str]:
 def words_of_source(source: str) -> set[str]:
     """Words of every string literal of one Python module except its docstrings."""
     tree = ast.parse(source)
-    skip = _docstrings(tree)
+    skip = docstrings(tree)
     out: set[str] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in skip:
