@@ -15,6 +15,11 @@ The `fresh2` split (`eval/data/fresh2_prompts.json`, `load_split("fresh2")`): ev
 (category "everyday", one person; "two_person") written blind, by someone who read only the
 check functions (`motion/checks`), never the studio's vocabulary, catalogue, planner,
 generators, the other prompt files or any output, so it measures how the studio generalises.
+
+The `fresh3` split (`eval/data/fresh3_prompts.json`, `load_split("fresh3")`): a second blind
+held-out set written the same way (30 one-person "everyday" prompts: chores, exercise, sports,
+gestures, emotions, work, play; 30 "two_person": greetings, helping, handing, playing, sports,
+dancing, comforting, arguing, chasing, teaching), its checks chosen before any output was seen.
 """
 
 from __future__ import annotations
@@ -28,9 +33,10 @@ from interplay.motion.checks.named import CHECKS
 SUITE = Path(__file__).resolve().parents[1] / "data" / "prompts.json"
 FRESH = SUITE.with_name("fresh_prompts.json")
 FRESH2 = SUITE.with_name("fresh2_prompts.json")
-SPLITS = ("dev", "test", "fresh", "fresh2")
+FRESH3 = SUITE.with_name("fresh3_prompts.json")
+SPLITS = ("dev", "test", "fresh", "fresh2", "fresh3")
 # The splits with a file of their own (every prompt there of that split); dev and test share SUITE.
-SPLIT_FILES: dict[str, Path] = {"fresh": FRESH, "fresh2": FRESH2}
+SPLIT_FILES: dict[str, Path] = {"fresh": FRESH, "fresh2": FRESH2, "fresh3": FRESH3}
 # Table order; the names as the table prints them.
 CATEGORIES: dict[str, str] = {
     "single": "single actions",
@@ -50,9 +56,10 @@ CATEGORIES: dict[str, str] = {
 # open-vocabulary path is tuned on them; the fresh split is its blind counterpart).
 FRESH_CATEGORIES: dict[str, str] = {"edits": "part edits", "everyday": "everyday words (dev)",
                                     "activities": "everyday activities (dev)"}
-# A category's name in one split's table where the shared one would mislead (fresh2's
-# "everyday" prompts are held out, not dev's tuning prompts).
-SPLIT_LABELS: dict[str, dict[str, str]] = {"fresh2": {"everyday": "everyday (held out, blind)"}}
+# A category's name in one split's table where the shared one would mislead (fresh2's and
+# fresh3's "everyday" prompts are held out, not dev's tuning prompts).
+SPLIT_LABELS: dict[str, dict[str, str]] = {"fresh2": {"everyday": "everyday (held out, blind)"},
+                                           "fresh3": {"everyday": "everyday (held out, blind)"}}
 STARTS = ("standing", "any", "low", "lying", "sitting", "kneeling", "all_fours")
 
 
@@ -130,8 +137,8 @@ def select(prompts: list[Prompt], split: str | None = None, categories=None,
 
 
 def load_split(split: str, ids=None) -> list[Prompt]:
-    """The prompts of one split (optionally only some ids): dev and test from the suite, fresh
-    and fresh2 from their own files (every prompt there must be of that split)."""
+    """The prompts of one split (optionally only some ids): dev and test from the suite, fresh,
+    fresh2 and fresh3 from their own files (every prompt there must be of that split)."""
     if split not in SPLITS:
         raise ValueError(f"split must be one of {SPLITS}, got {split!r}")
     path = SPLIT_FILES.get(split)
