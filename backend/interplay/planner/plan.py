@@ -252,13 +252,25 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
                           hold=bool(clause.hold), coverage=coverage_of(action, named)))
         _travel(steps[-1], reasons)
     if not steps:                                   # nothing recognisable: keep the words
-        action = decompose("stands still")
-        action.text = plain(_without_subject(split_subject(temporal.normalize(text))[1]))
-        action.base = f"a person {action.text}"
-        steps = [Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)),
-                      coverage=not_understood())]
-        reasons.append("no motion recognised: one segment with the prompt as written")
+        steps = _as_written(text, clauses, persons, reasons)
     return timed(prompt, persons, seconds, steps, reasons)
+
+
+def _as_written(text: str, clauses: list[temporal.Clause], persons: int, reasons: list[str]) -> list[Step]:
+    """No clause had a motion the planner knows: one segment with the prompt as written, or,
+    when the prompt was split into clauses ("hammer a nail, then sip a coffee"), one per clause
+    in their order, each shown as the nearest captures of its own words."""
+    said = [temporal.normalize(text)] if len(clauses) < 2 else [c.text for c in clauses]
+    steps = []
+    for words_said in said:
+        action = decompose("stands still")
+        action.text = plain(_without_subject(split_subject(words_said)[1]))
+        action.base = f"a person {action.text}"
+        steps.append(Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)),
+                          coverage=not_understood()))
+    reasons.append("no motion recognised: one segment with the prompt as written" if len(said) == 1 else
+                   f"no motion recognised: {len(said)} segments, each clause as written")
+    return steps
 
 
 def plan(prompt: str, persons: int = 1, seconds: float | None = None, settings=None) -> Plan:

@@ -1,0 +1,30 @@
+"""Clauses joined by ", then" whose verbs the catalogue does not know stay separate segments, in
+their order, each shown as the nearest captures of its own words (not one segment with the
+whole prompt)."""
+
+from __future__ import annotations
+
+import pytest
+
+from interplay.planner.plan import embedded_plan
+
+COFFEE = ["a person hammers a nail into the wall, then sips a hot coffee",
+          "hammer a nail into the wall, then sip a hot coffee",          # an order: base forms
+          "Hammer a nail into the wall, then sip a hot coffee."]
+
+
+@pytest.mark.parametrize("prompt", COFFEE)
+@pytest.mark.parametrize("persons", [1, 2])
+def test_two_unknown_clauses_are_two_segments(prompt, persons):
+    plan = embedded_plan(prompt, persons, None, None)
+    assert len(plan.segments) == 2
+    first, second = plan.segments
+    assert "hammer" in first.base and "nail" in first.base and "coffee" not in first.base
+    assert "sip" in second.base and "coffee" in second.base and "nail" not in second.base
+    assert first.end <= second.start
+    assert all(s.coverage is not None and s.coverage.how == "nearest" for s in plan.segments)
+
+
+def test_one_unknown_clause_is_still_the_prompt_as_written():
+    plan = embedded_plan("hammer a nail into the wall", 1, None, None)
+    assert [s.base for s in plan.segments] == ["a person hammer a nail into the wall"]
