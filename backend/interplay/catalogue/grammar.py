@@ -259,16 +259,12 @@ TIMES_SAID = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten
 AGAIN_STILL = re.compile(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+")     # said again: out
 AND_SPLIT = re.compile(r"\s+and\s+")
 TO_VERB = re.compile(r"\s+to\s+(\w+)")                          # "stands up to jump"
-# "before X, Y" / "after X, Y" / "X before Y" / "X after Y": the two parts and the order they happen
-BEFORE_AFTER = ((re.compile(r"^(?:before|prior\s+to)\s+(.+?),\s*(.+)$"), (1, 0)),
-                (re.compile(r"^after\s+(?!that\b)(.+?),\s*(.+)$"), (0, 1)),
-                (re.compile(r"^(.+?)\s+(?:before|prior\s+to)\s+(.+)$"), (0, 1)),
-                (re.compile(r"^(.+?)\s+after\s+(?!that\b|wards?\b)(.+)$"), (1, 0)))
-LIGHT_CHAIN = re.compile(
-    r"\b(start|starts|started|starting|begin|begins|began|beginning|keep|keeps|kept|keeping|"
-    r"continue|continues|continued|continuing|try|tries|tried|trying|attempt|attempts|attempted|"
-    r"attempting|transition|transitions|transitioned|transitioning|proceed|proceeds|proceeded|"
-    r"proceeding)\s+(?:to\s+|into\s+|on\s+)?(\w+)")
+# "before X, Y" / "after X, Y" / "X before Y" / "X after Y": one pattern, its alternatives tried
+# in this order; the k-th (from 1) fills groups 2k-1 and 2k (`m.lastindex` is 2k), the two parts
+# as written, and BEFORE_AFTER_ORDER[k-1] says which happens first
+BEFORE_AFTER = re.compile(r"^(?:(?:before|prior\s+to)\s+(.+?),\s*(.+)$|after\s+(?!that\b)(.+?),\s*(.+)$"
+                          r"|(.+?)\s+(?:before|prior\s+to)\s+(.+)$|(.+?)\s+after\s+(?!that\b|wards?\b)(.+)$)")
+BEFORE_AFTER_ORDER = ((1, 0), (0, 1), (0, 1), (1, 0))
 NOUN_ACT = re.compile(
     r"\b(?:(do|does|did|doing|perform|performs|performed|performing|make|makes|made|making|throw|"
     r"throws|threw|throwing|take|takes|took|taking|give|gives|gave|giving|execute|executes|"
@@ -349,12 +345,6 @@ TRAVEL_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
 
 # --- held poses (planner/manner/holds.py) ---
 HOLD_SIDE = re.compile(r"\b(left|right|both|each)\s+(?:\w+\s+)?(?:arms?|hands?|fists?|palms?)|\b(?:arms|hands|fists|palms)\b")
-HOLD_CONTINUE = re.compile(
-    r"^(?:and\s+)?(?:then\s+)?(?:waits?|pauses?|freezes?|remains?(?:\s+(?:still|there|so))?|"
-    r"stays?(?:\s+(?:there|still|put|like\s+(?:that|this)|(?:in|with)\s+(?:that|this|the)\s+"
-    r"(?:pose|position)))?|(?:keeps?|holds?)\s+(?:them|it|the\s+pose|the\s+position|that|this|"
-    r"(?:that|this)\s+(?:pose|position)|still)(?:\s+(?:up|there|raised|still|in\s+place))?)"
-    r"(?:\s+(?:there|a\s+(?:moment|while|bit)|for\s+[\w\s.]+))?$")
 
 
 # --- questions (planner/questions.py) ---

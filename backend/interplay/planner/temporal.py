@@ -97,7 +97,7 @@ def normalize(text: str) -> str:
     t = listed("progressive").sub(t, lambda found: _verb_in(found.text.split()[-1], "runs") or found.text)
     t = listed("gets_up").sub(t, lambda found: _stands(found.text) + " up")
     t = listed("rises_to_stand").sub(t, lambda found: _stands(found.text) + " up")
-    t = g.LIGHT_CHAIN.sub(lambda m: _verb_in(m.group(2), m.group(1)) or m.group(0), t)
+    t = listed("light_chain").sub(t, lambda found: _verb_in(found.text.split()[-1], found.text.split()[0]) or found.text)
     return " ".join(t.split())
 
 
@@ -212,11 +212,11 @@ def _split_to(text: str) -> list[str]:
 
 def _reorder(sentence: str) -> list[str]:
     """Pieces of a sentence in the order they happen ("before"/"after")."""
-    for rx, order in g.BEFORE_AFTER:
-        m = rx.match(sentence)
-        if m:
-            return [m.group(g + 1) for g in order]
-    return [sentence]
+    m = g.BEFORE_AFTER.match(sentence)
+    if m is None or m.lastindex is None:
+        return [sentence]
+    parts = (m.group(m.lastindex - 1), m.group(m.lastindex))
+    return [parts[k] for k in g.BEFORE_AFTER_ORDER[m.lastindex // 2 - 1]]
 
 
 def _expand(text: str) -> list[tuple[str, tuple[int, int] | None]]:

@@ -57,7 +57,7 @@ def held(phrase: str) -> dict[str, str]:
 
 def continues_hold(clause: str) -> bool:
     """Does a clause only keep what the step before it did ("waits", "keeps them up")?"""
-    return bool(g.HOLD_CONTINUE.match(clause.strip(" ,.").lower()))
+    return words("hold_continue").whole(clause.strip(" ,.").lower())
 
 
 def as_held(edit: str) -> str:
