@@ -27,8 +27,9 @@ from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
 from interplay.generators.interaction import contest, gestures, partners, piggyback, touches, travel
 from interplay.generators.interaction.bodies import SHARED
-from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, fallback, read_script, why_not
+from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, why_not
 from interplay.generators.interaction.library import Library
+from interplay.generators.interaction.reading import read
 from interplay.generators.interaction.scene import Cast, finish
 from interplay.generators.plan import GenerationPlan, Source
 from interplay.generators.retrieval.generator import RetrievalGenerator
@@ -120,7 +121,7 @@ class InteractionGenerator:
             return self._fallback(req, seed, "composes two people only")
         base = make_plan(req.prompt, 2, req.seconds)
         roles = _roles(base)
-        script = read_script(req.prompt, roles, self.index.encoder) or fallback(req.prompt, self.index.encoder)
+        script = read(req.prompt, roles, self.index.encoder)
         if script is None:
             return self._fallback(req, seed, f"no interaction it composes ({why_not(req.prompt, self.index.encoder)})")
         try:

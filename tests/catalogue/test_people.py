@@ -1,0 +1,42 @@
+"""The people of a two-person prompt in neutral words (`catalogue.people`): which nouns are
+people is the text encoder's call against a few descriptions, so role nouns no list names
+(waiter, grandson, fencer) become "one person" / "the other person", and objects, body parts
+and verbs stay as written."""
+
+from __future__ import annotations
+
+import pytest
+
+from interplay.catalogue.people import neutral, person_margin
+from interplay.text.encoder import get_encoder
+
+PEOPLE = ("waiter", "guest", "nurse", "grandson", "teammate", "stranger", "coach", "bride", "cop")
+THINGS = ("menu", "glass", "frisbee", "shoulders", "wall", "rope", "old", "little", "walks")
+
+
+def test_people_nouns_read_as_people_and_other_words_not():
+    margin = person_margin(list(PEOPLE + THINGS), get_encoder())
+    assert (margin[:len(PEOPLE)] > 0.005).all(), dict(zip(PEOPLE, margin))
+    assert (margin[len(PEOPLE):] <= 0.005).all(), dict(zip(THINGS, margin[len(PEOPLE):]))
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("a waiter hands a menu to a guest", "one person hands a menu to the other person"),
+    ("a father lifts his daughter onto his shoulders",
+     "one person lifts the other person onto his shoulders"),
+    ("an older brother carries his little sister on his back",
+     "one person carries the other person on his back"),
+    ("a kid runs away and his dad chases him", "one person runs away and the other person chases him"),
+    ("someone taps a stranger on the shoulder", "one person taps the other person on the shoulder"),
+    ("two boxers circle each other in the ring", "two people circle each other in the ring"),
+    ("a couple strolls arm in arm", "two people strolls arm in arm"),
+])
+def test_a_prompt_names_its_people_neutrally(prompt, plain):
+    assert neutral(prompt, get_encoder()) == plain
+
+
+def test_a_prompt_already_neutral_or_without_people_is_kept():
+    enc = get_encoder()
+    for prompt in ("one person pushes the other", "two people throw a ball back and forth",
+                   "jump over the fence"):
+        assert neutral(prompt, enc) == prompt
