@@ -133,8 +133,9 @@ def test_a_retrieved_salsa_exports_the_dancers_own_heads_and_hands():
     channel is the capture's, not the derived one."""
     import json
 
-    from interplay.motion.captured_leaves import _source_local, export_leaves, plan_leaves
+    from interplay.motion.captured_leaves import _source_local, plan_leaves
     from interplay.motion.formats.bvh import read_bvh, write_bvh
+    from interplay.pipeline.leaves import export_leaves
     from tests.helpers.gltf_files import FIXTURES, fixture_people
     plan = json.loads((FIXTURES / "retrieval_salsa.json").read_text())["plan"]
     people = fixture_people("retrieval_salsa")

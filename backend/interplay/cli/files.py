@@ -25,9 +25,9 @@ def cmd_metrics(args) -> int:
 
 def _leaves(motion) -> list[dict]:
     """Per person, the leaves to export: the motion's own (an edit's) over the captures' own
-    where its plan is a retrieval's (`motion/captured_leaves.export_leaves`)."""
-    from interplay.motion.captured_leaves import plan_leaves
-    captured = plan_leaves(motion.plan, len(motion.people), motion.frames)
+    where its frames are a capture's (`pipeline.leaves`: retrieval, retrieve-then-edit)."""
+    from interplay.pipeline.leaves import captured_since
+    captured = captured_since(motion.plan, len(motion.people), motion.frames)
     return [{**c, **motion.leaves_of(k)} for k, c in enumerate(captured)]
 
 
@@ -49,7 +49,7 @@ def cmd_export(args) -> int:
         return 0
     if args.format == "json":
         from interplay.pipeline.motion_json import plain
-        text = json.dumps(plain(motion.to_json(rig=True)), separators=(",", ":"))
+        text = json.dumps(plain(motion.to_json(rig=True, rig_leaves=_leaves(motion))), separators=(",", ":"))
     else:
         if not 0 <= args.person < len(motion.people):
             raise CliError(f"--person {args.person}: the motion has {len(motion.people)} "

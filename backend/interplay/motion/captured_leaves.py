@@ -108,15 +108,16 @@ def _view_local(view: str, person: int) -> dict[str, np.ndarray]:
     return local
 
 
-def plan_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
-    """Per person, the captured leaves of a retrieval motion's frames, (frames, 4) with NaN
-    rows where it has none (another source, a hold, SEAM frames at a join): read from the
-    plan's segments' captured pieces (`generators/plan.CapturePiece`: clip or view, people,
-    frames [start, end), laid end to end over the segment). Only for the retrieval
-    generator's plans, whose frames are the pieces' (turned and placed, which leaves the local
-    rotations as they are); [{}…] for any other plan or one that does not fit."""
+def piece_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
+    """Per person, the captured leaves of the frames a plan's segments' captured pieces give
+    (`generators/plan.CapturePiece`: clip or view, people, frames [start, end), laid end to
+    end over the segment, as retrieval's stream plays them), (frames, 4) with NaN rows where
+    it has none (another source, a hold, SEAM frames at a join); [{}…] where no piece carries
+    any or the plan does not fit. Any generator's plan: the caller knows whether its frames
+    are the pieces' (`plan_leaves`: retrieval's; `generators/retrieve_edit/leaves.py` masks
+    what its edits changed)."""
     empty: list[dict[str, np.ndarray]] = [{} for _ in range(persons)]
-    if not isinstance(plan, dict) or plan.get("generator") != "retrieval":
+    if not isinstance(plan, dict):
         return empty
     out = [{leaf: np.full((frames, 4), np.nan) for leaf in LEAF_NAMES} for _ in range(persons)]
     found = False
@@ -150,9 +151,29 @@ def plan_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, 
     return [{k: v for k, v in person.items() if np.isfinite(v).any()} for person in out]
 
 
-def export_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
-    """The leaves the exports give the rig: an edit's (plan["leaves"], `motion.leaves_in`)
-    over the captures' own (`plan_leaves`), leaf by leaf."""
-    from interplay.motion.motion import leaves_in
-    edited = leaves_in(plan, persons, frames)
-    return [{**c, **e} for c, e in zip(plan_leaves(plan, persons, frames), edited)]
+def plan_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
+    """`piece_leaves` for the retrieval generator's plans, whose frames are the pieces' (turned
+    and placed, which leaves the local rotations as they are); [{}…] for any other plan."""
+    if not isinstance(plan, dict) or plan.get("generator") != "retrieval":
+        return [{} for _ in range(persons)]
+    return piece_leaves(plan, persons, frames)
+
+
+def resample_leaves(q: np.ndarray, rate: float, frames: int) -> np.ndarray:
+    """Leaves (n, 4) (NaN rows: none) played at `rate` ≤ 1, as `kinematics.resample(x, 20·rate,
+    20)` plays positions (output frame i at input time i·rate), by slerp between the two
+    neighbours (NaN where either is), the last played row held to `frames` rows."""
+    from interplay.motion.rig import slerp
+    q = np.asarray(q, np.float64)
+    n = len(q)
+    if n < 2 or abs(rate - 1.0) < 1e-9:
+        played = q.copy()
+    else:
+        pos = np.arange(int(np.floor((n - 1) / rate + 1e-6)) + 1) * rate
+        lo = np.clip(np.floor(pos).astype(int), 0, n - 1)
+        hi = np.where(pos - lo < 1e-9, lo, np.clip(lo + 1, 0, n - 1))    # on a frame: that frame
+        ok = np.isfinite(q[lo]).all(-1) & np.isfinite(q[hi]).all(-1)
+        played = np.full((len(pos), 4), np.nan)
+        played[ok] = slerp(q[lo][ok], q[hi][ok], (pos - lo)[ok])
+    pad = np.repeat(played[-1:], max(0, frames - len(played)), axis=0)
+    return np.concatenate([played, pad])[:frames]

@@ -143,9 +143,12 @@ class Motion:
     def seconds(self) -> float:
         return self.frames / self.fps
 
-    def to_json(self, rig: bool = False) -> dict:
+    def to_json(self, rig: bool = False, rig_leaves: list | None = None) -> dict:
         """The Motion JSON (plain lists, joints rounded to 0.1 mm): version 1, or with rig=True
-        version 2, which adds the skeleton and each person's rig (see the module)."""
+        version 2, which adds the skeleton and each person's rig (see the module). rig_leaves:
+        per person, the leaves the rig takes in place of the motion's own (the exports' own,
+        `pipeline.leaves.export_leaves`: the captures' turns with NaN rows, which the JSON's
+        "leaves" cannot hold; the rig's rotations carry them)."""
         d: dict = {
             "fps": self.fps, "skeleton": SKELETON_NAME,
             "people": [{"joints": np.round(p.astype(np.float64), DECIMALS).tolist()}
@@ -160,7 +163,8 @@ class Motion:
             d = {"schema": SCHEMA_V2, **d, "joint_names": list(JOINT_NAMES),
                  "parents": list(PARENTS), "rig_convention": RIG_CONVENTION}
             for k, (person, joints) in enumerate(zip(d["people"], people)):
-                r = solve_rig(joints, floor=floor, leaves=self.leaves_of(k))
+                given = rig_leaves[k] if rig_leaves is not None else self.leaves_of(k)
+                r = solve_rig(joints, floor=floor, leaves=given)
                 person["rig"] = {key: np.round(value, RIG_DECIMALS).tolist() for key, value in
                                  (("offsets", r.offsets), ("root", r.root), ("rotations", r.rotations))}
         for k, person in enumerate(d["people"]):

@@ -42,11 +42,14 @@ def joints_list(joints: np.ndarray) -> list:
 
 def motion_file(m: StoredMotion) -> dict:
     """The Motion JSON of a stored motion as the JSON export downloads it: version 2, with the
-    skeleton and each person's rig (`Motion.to_json(rig=True)`); reads back with
-    `Motion.from_json`."""
+    skeleton and each person's rig (`Motion.to_json(rig=True)`), whose head and wrists turn
+    as the BVH and GLB exports' do (`pipeline.leaves.export_leaves`: the captures' own where
+    the frames are a capture's, an edit's); reads back with `Motion.from_json`."""
+    from interplay.pipeline.leaves import export_leaves
     motion = Motion(people=m.people, plan=m.plan or {}, metrics=m.metrics or {},
                     highlights=m.highlights, prompt=m.prompt, seed=m.seed)
-    return {**motion.to_json(rig=True), "id": m.id}
+    leaves = export_leaves(m.plan, len(motion.people), motion.frames)
+    return {**motion.to_json(rig=True, rig_leaves=leaves), "id": m.id}
 
 
 def motion_payload(m: StoredMotion) -> dict:

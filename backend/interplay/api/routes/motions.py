@@ -81,8 +81,8 @@ def export_motion(motion_id: str, repo: RepoDep,
                   ) -> Response:
     motion = _load(repo, motion_id)
     if format == "glb":
-        from interplay.motion.captured_leaves import export_leaves
         from interplay.motion.formats.gltf import MEDIA_TYPE, write_glb
+        from interplay.pipeline.leaves import export_leaves
         data = write_glb([p.astype("float64") for p in motion.people], fps=motion.fps, mesh=mesh,
                          name=motion.prompt or "motion", out_fps=int(fps), units=units, names=names,
                          leaves=export_leaves(motion.plan, motion.persons, motion.frames))
@@ -100,7 +100,7 @@ def export_motion(motion_id: str, repo: RepoDep,
     from interplay.motion.formats.bvh import write_bvh
     from interplay.motion.kinematics import floor_height
     people = [p.astype("float64") for p in motion.people]
-    from interplay.motion.captured_leaves import export_leaves
+    from interplay.pipeline.leaves import export_leaves
     text = write_bvh(people[person], fps=motion.fps, out_fps=int(fps), units=units, up=up, names=names,
                      floor=floor_height(people),
                      leaves=export_leaves(motion.plan, motion.persons, motion.frames)[person])

@@ -29,14 +29,23 @@ def travel_speed(joints: np.ndarray) -> float:
     return float(np.median(moving)) if len(moving) >= len(v) // 2 else 0.0
 
 
+def rate_of(joints: np.ndarray) -> float:
+    """The rate ≤ 1 `slow_down` plays joints (T, 22, 3) at: 1.0 when already slow enough (also
+    read by the exports' leaves, `leaves.py`, which play the captured leaves alike)."""
+    j = np.asarray(joints, dtype=np.float64)
+    if len(j) < 4:
+        return 1.0
+    v = travel_speed(j)
+    return 1.0 if v <= SLOW_MAX_M_S else max(SLOW_TARGET_M_S / v, MIN_RATE)
+
+
 def slow_down(joints: np.ndarray) -> tuple[np.ndarray, float]:
     """(joints of the same length played at `rate` ≤ 1, rate): slowed to about
     SLOW_TARGET_M_S when the motion travels faster than SLOW_MAX_M_S."""
     j = np.asarray(joints, dtype=np.float64)
-    v = travel_speed(j)
-    if v <= SLOW_MAX_M_S or len(j) < 4:
+    rate = rate_of(j)
+    if rate >= 1.0:
         return j, 1.0
-    rate = max(SLOW_TARGET_M_S / v, MIN_RATE)
     played = resample(j, sk.FPS * rate, sk.FPS)          # each frame shown 1/rate as long
     out = np.concatenate([played, np.repeat(played[-1:], max(0, len(j) - len(played)), 0)])[:len(j)]
     return fit_to_skeleton(out, fit_offsets(j))[0], round(rate, 3)
