@@ -39,8 +39,8 @@ export default defineConfig({
   workers: 1,
   fullyParallel: false,
   // In CI a failed spec runs once more, and a pass on the second run is reported as flaky, not
-  // hidden. Known flake (6 Dec 2026): path-draw's "a path applies to the next Generate only"
-  // stayed "connecting" once in five full runs, path-shown failing after it; both passed alone.
+  // hidden. The flake of 6 Dec 2026 (path-draw's "a path applies to the next Generate only",
+  // path-shown after it) was waitDone taking the previous job's "done": see `after` there.
   retries: process.env.CI ? 1 : 0,
   timeout: 180_000,
   expect: { timeout: 20_000 },

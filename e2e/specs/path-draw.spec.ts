@@ -111,6 +111,8 @@ test("a path applies to the next Generate only: the chip says so, and it is used
   await page.getByTestId("prompt").fill("a person walks forward slowly");
   await page.getByTestId("generate").click();
   expect((await again).postDataJSON().trajectory).toBeUndefined();
-  await waitDone(page);
+  // this Generate's own end, not the first job's "done" still on the stage
+  const next = await waitDone(page, { after: done.jobId });
+  expect(next.motionId).not.toBe(done.motionId);
   await shot(page, "p-path-used-up", info);
 });

@@ -66,7 +66,7 @@ test("the path a motion followed stays visible after generating, with a toggle",
   await page.getByTestId("prompt").fill("a person walks forward slowly");
   await page.getByTestId("generate").click();
   expect((await sent).postDataJSON().trajectory).toBeUndefined();
-  await waitDone(page);
+  await waitDone(page, { after: done.jobId }); // its own end, not the first job's "done"
   expect((await shown(page)).points).toEqual([]);
   await expect(page.getByTestId("path-visible")).toHaveCount(0);
 });

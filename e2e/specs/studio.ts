@@ -7,6 +7,8 @@ import { fileURLToPath } from "node:url";
 export interface HookSnapshot {
   motionId: string | null;
   phase: string;
+  /** The job streamed (or last streamed) on the stage; null for a motion opened from a link. */
+  jobId: string | null;
   persons: number;
   frameCount: number;
   framesReceived: number;
@@ -29,7 +31,6 @@ declare global {
   interface Window {
     __interplay: HookSnapshot & {
       parseBvh(text: string): Promise<BvhSummary>;
-      jobId: string | null;
       streamMode: string;
       renderScale: number;
       path: { person: number; points: [number, number][] };
@@ -71,6 +72,7 @@ export function hook(page: Page): Promise<HookSnapshot> {
     return {
       motionId: h.motionId,
       phase: h.phase,
+      jobId: h.jobId,
       persons: h.persons,
       frameCount: h.frameCount,
       framesReceived: h.framesReceived,
@@ -108,12 +110,22 @@ export async function startGeneration(page: Page, prompt: string, persons: 1 | 2
   await page.getByTestId("generate").click();
 }
 
-/** Wait for the stream to finish; fails with the page's error message if it did not. */
-export async function waitDone(page: Page, timeout = 150_000): Promise<HookSnapshot> {
-  await page.waitForFunction(() => ["done", "error"].includes(window.__interplay.phase), null, { timeout });
+/** Wait for the stream to finish; fails with the page's error message if it did not.
+ *
+ * `after`: the job the stage showed before this Generate (a snapshot's `jobId`). Until the new
+ * job's POST is answered the page still says "done" for that one, so without it a second
+ * Generate on the same page is "done" at once, and the snapshot taken a moment later may
+ * already say "connecting" (the CI flake of path-draw and path-shown, 6 Dec 2026). */
+export async function waitDone(page: Page, { after, timeout = 150_000 }: { after?: string | null; timeout?: number } = {}): Promise<HookSnapshot> {
+  await page.waitForFunction(
+    (after) => ["done", "error"].includes(window.__interplay.phase) && (after === undefined || window.__interplay.jobId !== after),
+    after,
+    { timeout },
+  );
   const h = await hook(page);
   if (h.phase !== "done") {
-    const banner = await page.getByTestId("error-banner").textContent().catch(() => null);
+    // short: without a banner this would wait for one until the test's own timeout
+    const banner = await page.getByTestId("error-banner").textContent({ timeout: 2_000 }).catch(() => null);
     throw new Error(`generation ended in ${h.phase}: ${banner}`);
   }
   return h;
