@@ -289,11 +289,19 @@ class JobManager:
     def _run(self, job: LiveJob, generator) -> None:
         if job.ended:                     # cancelled while queued
             return
-        rec = self.store.claim(job.id, self.name)
-        if rec is None:                   # ended by another process meanwhile (cancel, reaper)
-            done = self.store.get(job.id)
-            job.cancel()
-            job.push(ended_event(done), store=False)
+        try:
+            rec = self.store.claim(job.id, self.name)
+            if rec is None:               # ended by another process meanwhile (cancel, reaper)
+                done = self.store.get(job.id)
+                job.cancel()
+                job.push(ended_event(done), store=False)
+                return
+        except Exception as exc:
+            # Raised here it would only reach the pool's future, which nobody reads: the job
+            # would stay queued with no event and its streams would wait for ever. It fails,
+            # with the reason (e.g. SQLite's "database is locked"), and the thread goes on.
+            log.exception("job %s could not start", job.id)
+            job.push(ErrorEvent(stage="store", message=f"the job could not start: {exc}").dump())
             return
         job.status, job.attempts = "running", rec.attempts
         run_job(job, generator, self.repo, self._closing.is_set)
