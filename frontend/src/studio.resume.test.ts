@@ -4,28 +4,7 @@
 // again, not when the job ended meanwhile without a motion, not when a new Generate replaced
 // the job; and a retry of an earlier job never takes the stage back from a newer Generate.
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
-
-class FakeSocket {
-  static opened: FakeSocket[] = [];
-  onmessage: ((m: { data: string }) => void) | null = null;
-  onerror: (() => void) | null = null;
-  onclose: ((e: { code: number; reason: string }) => void) | null = null;
-  closed = false;
-  constructor(readonly url: string) {
-    FakeSocket.opened.push(this);
-  }
-  send(ev: object) {
-    this.onmessage?.({ data: JSON.stringify(ev) });
-  }
-  /** The connection drops (the server went away): no close frame. */
-  drop() {
-    this.onerror?.();
-    this.onclose?.({ code: 1006, reason: "" });
-  }
-  close() {
-    this.closed = true;
-  }
-}
+import { FakeSocket, loadStudio as studio, stubPage, unstubPage } from "./test/fakeStudioPage";
 
 type Answer = { status: number; body: unknown } | "unreachable" | Promise<{ status: number; body: unknown }>;
 /** GET /api/jobs/{id}: the answers to give, in turn (the last one again when they run out). */
@@ -49,19 +28,7 @@ beforeEach(() => {
   jobs = 0;
   jobAnswers = {};
   motions = {};
-  FakeSocket.opened = [];
-  const history = {
-    url: "/",
-    pushState: vi.fn((_s: unknown, _t: string, url: string) => (history.url = url)),
-    replaceState: vi.fn((_s: unknown, _t: string, url: string) => (history.url = url)),
-  };
-  vi.stubGlobal("window", {
-    history,
-    location: { get pathname() { return history.url.split("?")[0]; }, get search() { const i = history.url.indexOf("?"); return i < 0 ? "" : history.url.slice(i); }, protocol: "http:", host: "studio" },
-    addEventListener: () => undefined,
-    setTimeout: (f: () => void, ms: number) => setTimeout(f, ms),
-  });
-  vi.stubGlobal("WebSocket", FakeSocket);
+  stubPage();
   vi.stubGlobal(
     "fetch",
     vi.fn(async (url: string, init?: RequestInit) => {
@@ -89,16 +56,8 @@ beforeEach(() => {
 
 afterEach(() => {
   vi.useRealTimers();
-  vi.unstubAllGlobals();
-  vi.resetModules();
+  unstubPage();
 });
-
-async function studio() {
-  const mod = await import("./studio");
-  const { useStudio } = await import("./store");
-  useStudio.setState({ prompt: "a person walks forward", persons: 1, seconds: 2 });
-  return { ...mod, useStudio };
-}
 
 /** Let the retry loop's timers and the stubbed requests run. */
 const settle = (ms = 20_000) => vi.advanceTimersByTimeAsync(ms);

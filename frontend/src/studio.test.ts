@@ -2,20 +2,7 @@
 // sends one POST /api/jobs, the same request while it runs sends none, a changed request
 // cancels the running job and starts its own; the job's URL is pushed for a reload.
 import { afterEach, beforeEach, describe, expect, it, vi } from "vitest";
-
-class FakeSocket {
-  static opened: FakeSocket[] = [];
-  onmessage: ((m: { data: string }) => void) | null = null;
-  onerror: (() => void) | null = null;
-  onclose: (() => void) | null = null;
-  constructor(readonly url: string) {
-    FakeSocket.opened.push(this);
-  }
-  send(ev: object) {
-    this.onmessage?.({ data: JSON.stringify(ev) });
-  }
-  close() {}
-}
+import { FakeSocket, loadStudio as studio, stubPage, unstubPage } from "./test/fakeStudioPage";
 
 let calls: { method: string; url: string; headers: Record<string, string> }[] = [];
 let jobs = 0;
@@ -23,18 +10,7 @@ let jobs = 0;
 beforeEach(() => {
   calls = [];
   jobs = 0;
-  FakeSocket.opened = [];
-  const history = {
-    url: "/",
-    pushState: vi.fn((_s: unknown, _t: string, url: string) => (history.url = url)),
-    replaceState: vi.fn((_s: unknown, _t: string, url: string) => (history.url = url)),
-  };
-  vi.stubGlobal("window", {
-    history,
-    location: { get pathname() { return history.url.split("?")[0]; }, get search() { const i = history.url.indexOf("?"); return i < 0 ? "" : history.url.slice(i); }, protocol: "http:", host: "studio" },
-    addEventListener: () => undefined,
-  });
-  vi.stubGlobal("WebSocket", FakeSocket);
+  stubPage();
   vi.stubGlobal(
     "fetch",
     vi.fn(async (url: string, init?: RequestInit) => {
@@ -51,17 +27,7 @@ beforeEach(() => {
   );
 });
 
-afterEach(() => {
-  vi.unstubAllGlobals();
-  vi.resetModules();
-});
-
-async function studio() {
-  const mod = await import("./studio");
-  const { useStudio } = await import("./store");
-  useStudio.setState({ prompt: "a person walks forward", persons: 1, seconds: 2 });
-  return { ...mod, useStudio };
-}
+afterEach(unstubPage);
 
 const posts = () => calls.filter((c) => c.method === "POST" && c.url === "/api/jobs");
 
