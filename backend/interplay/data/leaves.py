@@ -13,30 +13,37 @@ that match the library's clip frame for frame. The file holds
                                identity = a T-pose facing +Z, the hand along the forearm
     index  JSON text           [{"id", "person", "start", "frames"}] into quats
 
-Read by `interplay.motion.captured_leaves`. Carried today (962 people, 98,204 frames): the
-BVH sources whose files name a head and hands, cmu-bvh (the 54 Daz-named of its 56 clips; the
-other two are Acclaim-named), cmu-salsa (both dancers), bandai-namco (593 clips), and HDM05's
-ASF/AMC (287; head, lhand, rhand). Not yet: cmu-asfamc (4), cmu-iclone (38), cmu-8action
-(exp-map text) and DeepMimic. The positions' own pipeline is replayed on the rotations: the
-converter's lead-in cut, the capture rate's resampling to 20 fps (slerp at the very times
-`kinematics.resample` takes), the canonical yaw.
+Read by `interplay.motion.captured_leaves`. Carried: every person of every captured source
+(1064 people, 113,521 frames; the composed pairs are no captures): cmu-bvh (54 Daz- and 2
+Acclaim-named files), cmu-salsa (both dancers), bandai-namco (593), hdm05 (287), cmu-asfamc
+(4), cmu-iclone (38), cmu-8action (38) and deepmimic (20, the head only: its humanoid's wrists
+are fixed joints, so no file turns a hand; a leaf not carried is stored as NaN). Each
+format's bones are read by `leaves_read.py`, which replays the positions' own pipeline on
+the rotations (the converter's lead-in or T-pose cut, the capture rate's resampling to 20 fps
+by slerp at the very times the positions take, the canonical yaw). Toes are not carried yet:
+the rig takes explicit rotations for the head and wrists only (`rig/leaves.py` derives each toe
+and bends it off the floor), and two sources have no toe channel to give (the 8-action files'
+toe rotations are 0 on every frame; DeepMimic's humanoid ends at the ankle).
 
 Rest correction C per leaf (the world orientation stored is the file's leaf frame times C):
-- Daz and Acclaim (HDM05) rest as the rig does (a T-pose facing +Z, Y up, left at +X): the
-  head needs none, each hand the turn from the rig's rest hand (along the template's rest
-  forearm) onto the file's (Daz: wrist → middle finger; Acclaim: the hand bone), exact.
-- Bandai Namco's rest figure lies along +X (every bone along its own X), so C is measured,
+- Daz, Acclaim (HDM05, cmu-asfamc, cmu-bvh's Acclaim-named files, the 8-action exp-maps) and
+  DeepMimic rest as the rig does, or as it does turned (DeepMimic faces +X: C is +90° about
+  Y): the head needs none, each hand the turn from the rig's rest hand (along the template's
+  rest forearm) onto the file's, exact, per person.
+- Bandai Namco's rest figure lies along +X and iClone's CC_Base bones have axes of their own,
+  so C is measured per source,
   as the SVD projection of a mean rotation: a hand's from the file's forearm frame to the
   rig's (`solve_rig` on the library's joints) over the first RESTS people, so a hand at rest
-  on its forearm in the file is at rest on its forearm in the rig (3° and 174° for the left
-  and right hands: the right arm's X points the other way); the head's from the file's head
-  frame to the body's facing, upright, over RESTS plain walks ("a person walks": a walker
-  looks ahead and level; the head's turn on the neck would not do, the figure's neck leans
-  otherwise than the rig's and tilted every face 33° up).
+  on its forearm in the file is at rest on its forearm in the rig (Bandai: 3° and 174° for
+  the left and right hands: the right arm's X points the other way); the head's from the
+  file's head frame to the body's facing, upright, over RESTS plain walks ("a person walks": a
+  walker looks ahead and level; the head's turn on the neck would not do, the figure's neck
+  leans otherwise than the rig's and tilted every face 33° up).
 The build reports how far the carried leaves are from the library's own joints (`agreement`:
-medians 5–16° between the face and the body's facing, 9–25° between a hand and its forearm).
+medians 5–16° between the face and the body's facing, 9–32° between a hand and its forearm:
+CMU's Acclaim-based hands and iClone's left bend the most).
 
-    interplay data leaves                      # every carried source (~25 s)
+    interplay data leaves                      # every carried source (~45 s)
     interplay data leaves --only cmu-salsa
 """
 
@@ -46,102 +53,20 @@ import argparse
 import json
 import sys
 import time
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
+from interplay.data.leaves_read import acclaim_globals, bvh_globals, deepmimic_globals, expmap_globals
 from interplay.motion import skeleton as sk
 from interplay.motion.captured_leaves import LEAF_NAMES, leaves_file
 from interplay.motion.clip import DATA_DIR, Clip, load_clips
-from interplay.motion.kinematics import forward_kinematics
-from interplay.motion.rotations import matrix_to_quat, quat_to_matrix, rotation_between, yaw_matrix
+from interplay.motion.rotations import matrix_to_quat, quat_to_matrix, yaw_matrix
 
 REPO = Path(__file__).resolve().parents[3]
 DEFAULT_SOURCE = REPO.parent / "shared" / "data"
-# Per BVH family, each leaf's bone and its parent bone's (the rig's parent joint's match).
-BONES: dict[str, dict[str, tuple[str, str]]] = {
-    "daz": {"head": ("head", "neck"), "left_wrist": ("lHand", "lForeArm"),
-            "right_wrist": ("rHand", "rForeArm")},
-    "bandai-namco": {"head": ("Head", "Neck"), "left_wrist": ("Hand_L", "LowerArm_L"),
-                     "right_wrist": ("Hand_R", "LowerArm_R")},
-}
-ACCLAIM_BONES: dict[str, tuple[str, str]] = {
-    "head": ("head", "upperneck"), "left_wrist": ("lhand", "lradius"), "right_wrist": ("rhand", "rradius")}
 RESTS = 24                       # people per source the rest correction is measured on
 J = sk.JOINT_INDEX
-
-
-def _slerp_resample(q: np.ndarray, src_fps: float, dst_fps: float = sk.FPS) -> np.ndarray:
-    """Unit quaternions (n, ..., 4) at src_fps → dst_fps at the times `kinematics.resample`
-    takes (so frame i lands on the positions' frame i), by slerp between neighbours."""
-    from interplay.motion.rig import slerp
-    n = q.shape[0]
-    if n < 2 or abs(src_fps - dst_fps) < 1e-9:
-        return q.copy()
-    duration = (n - 1) / src_fps
-    pos = np.arange(int(np.floor(duration * dst_fps + 1e-6)) + 1) / dst_fps * src_fps
-    lo = np.clip(np.floor(pos).astype(int), 0, n - 1)
-    hi = np.clip(lo + 1, 0, n - 1)
-    w = np.broadcast_to((pos - lo).reshape((-1,) + (1,) * (q.ndim - 2)), q[lo].shape[:-1])
-    return slerp(q[lo], q[hi], w)
-
-
-def bvh_globals(path: Path, cut: int, fps: float, yaw: float) -> dict[str, np.ndarray] | None:
-    """Per leaf, the world rotations (T, 2, 3, 3) of its bone and its parent bone in a
-    Daz-named CMU or a Bandai Namco BVH (both Y up), replayed through the positions'
-    pipeline (lead-in `cut`, capture rate `fps` → 20, canonical `yaw`), and for Daz "rest":
-    the exact rest corrections (3, 3, 3) of the head and hands; None for a file of another
-    family."""
-    from interplay.motion.formats.bvh import read_bvh
-    from interplay.motion.retarget.cmu_daz import acclaim_names
-    bvh = acclaim_names(read_bvh(path))
-    family = next((f for f, bones in BONES.items()
-                   if all(b in bvh.names for pair in bones.values() for b in pair)), None)
-    if family is None:
-        return None
-    rot, _ = bvh.local_transforms()
-    _, glob = forward_kinematics(rot[cut:], np.zeros((len(rot) - cut, 3)), bvh.offsets, list(bvh.parents))
-    out = {}
-    for leaf, pair in BONES[family].items():
-        g = yaw_matrix(yaw) @ glob[:, [bvh.index(b) for b in pair]]
-        out[leaf] = quat_to_matrix(_slerp_resample(matrix_to_quat(g), fps))
-    if family == "daz":                          # rests as the rig: exact corrections (docstring)
-        rest = replace(bvh, motion=np.zeros((1, bvh.motion.shape[1]))).named_positions()
-        out["rest"] = np.stack([np.eye(3)] + [
-            rotation_between(sk.REST_OFFSETS[J[leaf]], rest[finger][0] - rest[hand][0])
-            for leaf, hand, finger in (("left_wrist", "lHand", "lMid1"), ("right_wrist", "rHand", "rMid1"))])
-    return out
-
-
-def acclaim_globals(amc_path: Path, asf_path: Path, fps: float, yaw: float) -> dict[str, np.ndarray]:
-    """Per leaf, the world rotations (T, 2, 3, 3) of its Acclaim bone and its parent bone
-    (head on upperneck, lhand / rhand on lradius / rradius; the bones' global rotations as
-    `formats.acclaim.forward_kinematics` composes them, L = C · M · C⁻¹), resampled from
-    `fps` to 20 and turned by the canonical `yaw`, and "rest": the exact rest corrections
-    (Acclaim rests as the rig: a T-pose facing +Z, Y up, left at +X; each hand's rest
-    direction is its hand bone's)."""
-    from interplay.motion.formats.acclaim import _bone_motion, ordered_rotation, read_amc, read_asf
-    asf, amc = read_asf(asf_path), read_amc(amc_path)
-    t = amc.n_frames
-    degrees = amc.degrees if amc.degrees is not None else asf.angle_unit == "deg"
-    to_rad = np.pi / 180 if degrees else 1.0
-    root = amc.values["root"]
-    cols = [i for i, ch in enumerate(asf.root_order) if ch.lower().startswith("r")]
-    c_root = ordered_rotation(asf.root_orientation, asf.root_axis)
-    axes = "".join(asf.root_order[i][1].upper() for i in cols)
-    glob = {"root": c_root @ ordered_rotation(root[:, cols] * to_rad, axes) @ c_root.T}
-    for name, bone in asf.bones.items():
-        c = ordered_rotation(bone.axis, bone.axis_order)
-        glob[name] = glob[asf.parents[name]] @ (c @ _bone_motion(bone, amc.values.get(name), t, to_rad) @ c.T)
-    out = {}
-    for leaf, pair in ACCLAIM_BONES.items():
-        g = yaw_matrix(yaw) @ np.stack([glob[b] for b in pair], axis=1)
-        out[leaf] = quat_to_matrix(_slerp_resample(matrix_to_quat(g), fps))
-    out["rest"] = np.stack([np.eye(3)] + [
-        rotation_between(sk.REST_OFFSETS[J[leaf]], asf.bones[ACCLAIM_BONES[leaf][0]].direction)
-        for leaf in ("left_wrist", "right_wrist")])
-    return out
 
 
 def rest_corrections(samples: list[tuple[dict[str, np.ndarray], np.ndarray]]) -> dict[str, np.ndarray]:
@@ -169,18 +94,26 @@ def rest_corrections(samples: list[tuple[dict[str, np.ndarray], np.ndarray]]) ->
 
 
 def _carry(clip: Clip, src: Path) -> list[dict[str, np.ndarray] | None]:
-    """Per person of a library clip, its leaves' `bvh_globals` / `acclaim_globals`, or None."""
+    """Per person of a library clip, its leaves' world rotations (`leaves_read`), or None."""
     meta = clip.meta
     yaw = float(meta.get("canonical", {}).get("yaw", 0.0))
     out: list[dict[str, np.ndarray] | None] = []
     if clip.source == "hdm05":
         out.append(acclaim_globals(src / meta["file"], src / "hdm05" / "asf" / f"HDM_{meta['actor']}.asf",
                                    float(meta["source_fps"]), yaw))
-    elif clip.source in ("cmu-bvh", "bandai-namco", "cmu-salsa"):
+    elif clip.source == "cmu-asfamc":
+        from interplay.motion.retarget.cmu_acclaim import find_asf
+        out.append(acclaim_globals(src / meta["file"], find_asf(src / meta["file"]),
+                                   float(meta["source_fps"]), yaw))
+    elif clip.source in ("cmu-bvh", "bandai-namco", "cmu-salsa", "cmu-iclone"):
         files = list(meta["files"]) if clip.source == "cmu-salsa" else [meta["file"]]
+        cut = int(meta.get("tpose_frames_dropped", meta.get("lead_in_frames", 0)))
         for rel in files:
-            out.append(bvh_globals(src / rel, int(meta.get("lead_in_frames", 0)),
-                                   float(meta["native_fps"]), yaw))
+            out.append(bvh_globals(src / rel, cut, float(meta["native_fps"]), yaw))
+    elif clip.source == "cmu-8action":
+        out.append(expmap_globals(src / meta["file"], yaw))
+    elif clip.source == "deepmimic":
+        out.append(deepmimic_globals(src / meta["file"], float(meta["source_fps"]), yaw))
     else:
         return [None] * len(clip.people)
     for k, g in enumerate(out):
@@ -197,12 +130,14 @@ def agreement(joints: np.ndarray, q: np.ndarray) -> dict[str, float]:
     direction (its orientation applied to the rest forearm) against the forearm itself (they
     are different bones, a hand bends on its forearm: some degrees are normal)."""
     from interplay.motion.kinematics import facing_direction
-    m = quat_to_matrix(q.astype(np.float64))
+    m = quat_to_matrix(np.nan_to_num(q.astype(np.float64), nan=1.0))
     face = m[:, 0, :, 2] * [1.0, 0.0, 1.0]
     body = facing_direction(joints) * [1.0, 0.0, 1.0]
     cos = np.sum(face * body, -1) / np.maximum(np.linalg.norm(face, axis=-1) * np.linalg.norm(body, axis=-1), 1e-9)
     out = {"head": float(np.median(np.degrees(np.arccos(np.clip(cos, -1, 1)))))}
     for i, leaf in enumerate(LEAF_NAMES[1:], start=1):
+        if not np.isfinite(q[:, i].astype(np.float64)).all():          # not carried (DeepMimic's hands)
+            continue
         along = sk.REST_OFFSETS[J[leaf]]
         d = m[:, i] @ (along / np.linalg.norm(along))
         bone = joints[:, J[leaf]] - joints[:, sk.PARENTS[J[leaf]]]
@@ -218,9 +153,8 @@ def build_leaves(source: str, src: Path, out: Path) -> dict:
     people = [(clip, k, g) for clip in clips for k, g in enumerate(_carry(clip, src)) if g is not None]
     if not people:
         raise ValueError(f"{source}: no clip carries its leaves")
-    if "rest" in people[0][2]:
-        fix = dict(zip(LEAF_NAMES, people[0][2]["rest"]))
-    else:
+    exact = all("rest" in g for _, _, g in people)
+    if not exact:
         # The head's from plain walks (a person walking looks ahead, not down at a bow or
         # at a waving hand); the hands' from the first people.
         walks = [p for p in people if p[0].prompt == "a person walks"] or people
@@ -230,22 +164,30 @@ def build_leaves(source: str, src: Path, out: Path) -> dict:
     quats, index, agree = [], [], []
     start = 0
     for clip, k, g in people:
-        q = np.stack([matrix_to_quat(g[leaf][:, 0] @ fix[leaf]) for leaf in LEAF_NAMES], axis=1)
+        rest = dict(zip(LEAF_NAMES, g["rest"])) if exact else fix     # exact: the person's own file
+        q = np.full((len(g["head"]), len(LEAF_NAMES), 4), np.nan)      # NaN: a leaf not carried
+        for i, leaf in enumerate(LEAF_NAMES):
+            if leaf in g:
+                q[:, i] = matrix_to_quat(g[leaf][:, 0] @ rest[leaf])
         index.append({"id": clip.id, "person": k, "start": start, "frames": len(q)})
         quats.append(q.astype(np.float16))
         agree.append(agreement(np.asarray(clip.people[k], np.float64), q))
         start += len(q)
+    if exact:
+        fix = dict(zip(LEAF_NAMES, people[0][2]["rest"]))
     leaves_file(source, out).parent.mkdir(parents=True, exist_ok=True)
     np.savez_compressed(leaves_file(source, out), quats=np.concatenate(quats),
                         index=np.array(json.dumps(index)))
     turn = {leaf: round(float(np.degrees(np.arccos(np.clip((np.trace(c) - 1) / 2, -1, 1)))), 1)
             for leaf, c in fix.items()}
-    return {"source": source, "people": len(index), "frames": start, "rest_correction_deg": turn,
-            "agreement_deg": {leaf: round(float(np.median([a[leaf] for a in agree])), 1)
-                              for leaf in LEAF_NAMES}}
+    return {"source": source, "people": len(index), "clips": len({row["id"] for row in index}),
+            "frames": start, "rest_correction_deg": turn,
+            "agreement_deg": {leaf: round(float(np.median([a[leaf] for a in agree if leaf in a])), 1)
+                              for leaf in LEAF_NAMES if any(leaf in a for a in agree)}}
 
 
-CARRIED = ("cmu-bvh", "cmu-salsa", "bandai-namco", "hdm05")
+CARRIED = ("cmu-bvh", "cmu-salsa", "bandai-namco", "hdm05", "cmu-asfamc", "cmu-iclone", "cmu-8action",
+           "deepmimic")
 
 
 def main(argv: list[str] | None = None) -> int:

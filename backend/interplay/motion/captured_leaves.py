@@ -46,14 +46,15 @@ def _load(data_dir: str) -> dict[tuple[str, int], np.ndarray]:
 def captured_world(clip_id: str, person: int = 0, frames: int | None = None,
                    data_dir: Path | str = DATA_DIR) -> dict[str, np.ndarray]:
     """The capture's world orientations {leaf: (T, 4)} (unit, w x y z, the library's canonical
-    frame) of a library clip's person; {} where the library carries none, or where `frames`
-    is given and differs (a side file from another build of the library)."""
+    frame) of a library clip's person, the leaves its source carries; {} where the library
+    carries none, or where `frames` is given and differs (a side file from another build)."""
     q = _load(str(data_dir)).get((clip_id, int(person)))
     if q is None or (frames is not None and len(q) != frames):
         return {}
     q = q.astype(np.float64)
     q /= np.linalg.norm(q, axis=-1, keepdims=True)
-    return {leaf: q[:, i] for i, leaf in enumerate(LEAF_NAMES)}
+    # a leaf the source has no channel for is stored as NaN (DeepMimic's fixed wrists)
+    return {leaf: q[:, i] for i, leaf in enumerate(LEAF_NAMES) if np.isfinite(q[:, i]).all()}
 
 
 def captured_local(joints: np.ndarray, world: dict[str, np.ndarray], *, fps: float = sk.FPS,
