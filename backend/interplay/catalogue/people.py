@@ -69,10 +69,11 @@ def _phrases(tokens: list[str]) -> list[tuple[int, int, list[int], bool]]:
     return out
 
 
-def neutral(prompt: str, encoder) -> str:
+def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     """The prompt with its people named "one person" / "the other person" ("two people" for a
     pair named at once: "two kids", "a couple"), in order; everything else as written. The
-    prompt itself when it already says "the other"."""
+    prompt itself when it already says "the other". People named by a noun in `keep` count in the order but stay as written ("the man hands a menu to a guest" → "the
+    man hands a menu to the other person")."""
     tokens = prompt.split()
     if "the other" in prompt.lower():
         return prompt
@@ -81,6 +82,10 @@ def neutral(prompt: str, encoder) -> str:
     words = sorted({_bare(tokens[j]) for _, _, c, _ in found for j in c})
     margin = dict(zip(words, person_margin(words, encoder)))
     named = [(start, start + 1, False) for start, w in enumerate(tokens) if _bare(w) in t["alone"]]
+    first = _bare(tokens[0]) if tokens else ""
+    if first not in t["alone"] and (first and not found or (found and found[0][0] > 0 and first not in t["determiners"])):
+        if person_margin([first], encoder)[0] > t["first_margin"]:     # a name first: "Mom tucks …"
+            named.append((0, 1, False))
     for start, _, cands, pair in found:
         best = next((j for j in cands if margin[_bare(tokens[j])] > t["margin"]), None)
         if best is not None:    # the phrase ends at its first person word ("a waiter | hands")
@@ -88,7 +93,10 @@ def neutral(prompt: str, encoder) -> str:
     swaps, seen = [], 0
     for start, end, pair in sorted(named):
         tail = tokens[end - 1][-1] if tokens[end - 1][-1:] in _PUNCT else ""
-        if pair:
+        noun = _bare(tokens[end - 1])
+        if noun in keep:
+            seen = 2 if pair else seen + 1
+        elif pair:
             swaps.append((start, end, "two people" + tail))
             seen = 2
         elif seen < 2:

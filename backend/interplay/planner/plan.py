@@ -30,15 +30,20 @@ from interplay.planner.decompose import POSTURE_BASE, Action, decompose, plain, 
 from interplay.planner.manner.holds import continues_hold
 from interplay.planner.manner.travel import direction, untangle
 from interplay.planner.pair.actors import actors as who_acts
+from interplay.planner.pair.named import plain_people
 from interplay.planner.pair.roles import exchange, exchange_steps
 from interplay.planner.resolve import coverage_of, not_understood, resolve
 from interplay.planner.schema import MAX_REPEAT, Plan
 from interplay.planner.segments import MAX_SECONDS, Step, timed
 from interplay.planner.trajectory_text import parse as parse_trajectory
 from interplay.planner.verbs import gerund, lookup
+from interplay.text.encoder import get_encoder
 
 MAX_PROMPT = 500
 IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
+# A clause of one person doing something to the other: its subject, and the partner after it.
+ONE_SUBJECT, FIRST_SUBJECT, OTHER_PERSON = words("pair_one"), words("pair_first"), words("pair_other")
+MUTUAL = words("pair_mutual")          # "… each other": both act
 # Postures a step can stay in ("kneels on one knee and stays there"); part verbs hold poses.
 _POSED = {"kneel", "squat", "crouch", "sit", "lie", "stand", "pose", "balance", "lean", "bend"}
 
@@ -179,6 +184,9 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
     for step in (strip_context, _onset_poses):
         text, notes = step(text)
         reasons.extend(notes)
+    if persons == 2 and vocabulary is not None:     # "a waiter … a guest": one person … the other
+        text, notes = plain_people(text, get_encoder())
+        reasons.extend(notes)
     text, notes, named = lexicon.rewrite_named(text)
     reasons.extend(notes)
     clauses = temporal.split(temporal.normalize(text)) or [temporal.Clause(text.lower())]
@@ -220,6 +228,10 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             clause.text = clause.text[:other.start()]
         probe = decompose(clause.text, "standing")
         actors = who_acts(probe.subject, persons, prev, names, clause.text)
+        if persons == 2 and probe.subject is None and len(actors) == 2 and _one_to_the_other(clause.text) == 0 \
+                and not MUTUAL.search(clause.text):
+            actors = [0]                  # "one person hands a menu to the other person"
+            reasons.append("roles: person 0 does what the words say to the other, who stands by")
         action = decompose(clause.text, postures[actors[0]], last_parts, bool(clause.hold))
         if not action.known:
             action = resolve(action, clause.text, postures[actors[0]], last_parts, vocabulary, reasons)
@@ -266,11 +278,24 @@ def _as_written(text: str, clauses: list[temporal.Clause], persons: int, reasons
         action = decompose("stands still")
         action.text = plain(_without_subject(split_subject(words_said)[1]))
         action.base = f"a person {action.text}"
+        who = _one_to_the_other(words_said) if persons == 2 else None
+        if who is not None:          # "one person hands a menu to the other person": 0 acts
+            steps.append(Step(action, 1, [who], None, None, {1 - who: IDLE["standing"]}, [who],
+                              coverage=not_understood()))
+            reasons.append(f"roles: person {who} does what the words say to the other, who stands by")
+            continue
         steps.append(Step(action, 1, list(range(persons)), None, None, {}, list(range(persons)),
                           coverage=not_understood()))
     reasons.append("no motion recognised: one segment with the prompt as written" if len(said) == 1 else
                    f"no motion recognised: {len(said)} segments, each clause as written")
     return steps
+
+
+def _one_to_the_other(text: str) -> int | None:
+    """Person 0 when a clause is one person's doing to the other ("one person serves the other
+    person a cup of tea"), else None (both act as written)."""
+    first = ONE_SUBJECT.starts(text) or FIRST_SUBJECT.starts(text)
+    return 0 if first is not None and OTHER_PERSON.search(text[first.end:]) else None
 
 
 def plan(prompt: str, persons: int = 1, seconds: float | None = None, settings=None) -> Plan:

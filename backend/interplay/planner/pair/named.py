@@ -1,0 +1,27 @@
+"""The people of a two-person prompt named as the planner reads them: a noun the planner
+knows ("the woman", "her partner") is read as written; a prompt that names one it does not
+("a waiter", "two coworkers", "his grandson") has its people named "one person" / "the other
+person" / "two people" (`catalogue.people`, the text encoder's person-or-thing call), so that
+the pair grammar finds who does what:
+
+    plain_people("a waiter hands a menu to a guest", encoder)
+      → "one person hands a menu to the other person"
+    plain_people("two coworkers argue loudly", encoder) → "two people argue loudly"
+"""
+
+from __future__ import annotations
+
+from interplay.catalogue.people import neutral
+from interplay.planner.pair.roles import NOUNS
+
+KNOWN = frozenset(NOUNS)
+
+
+def plain_people(text: str, encoder) -> tuple[str, list[str]]:
+    """(text, reasons): the text with the people the planner does not know named neutrally."""
+    if neutral(text, encoder, keep=KNOWN) == text:       # every person named is one it knows
+        return text, []
+    out = neutral(text, encoder)
+    if out == text:
+        return text, []
+    return out, [f"people: '{text}' read as '{out}' (the people named by role)"]
