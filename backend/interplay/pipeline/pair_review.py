@@ -35,21 +35,6 @@ from interplay.review.checks import contact_mode
 
 OnFrames = Callable[[int, list[np.ndarray]], None]
 CHUNK = 40
-# The benchmark's checks per interaction kind (eval/data/prompts.json asks the same)
-KIND_CHECKS: dict[str, list[dict]] = {
-    "handshake": [{"check": "handshake"}],
-    "high_five": [{"check": "high_five"}],
-    "hug": [{"check": "hug"}],
-    "push": [{"check": "push"}],
-    "wave": [{"check": "wave", "person": "both", "level": "shoulder"}],
-    "wave_back": [{"check": "wave_back"}],
-    "bow": [{"check": "bow", "person": "both"}],
-    "mirror": [{"check": "mirrors"}],
-    "follow": [{"check": "follows"}],
-    "one_stops": [{"check": "one_stops"}],
-    "side_by_side": [{"check": "side_by_side"}],
-    "approach": [{"check": "approach"}],
-}
 DANCE_CHECKS = [{"check": "close_together"}, {"check": "active", "person": "both"}]
 
 
@@ -81,8 +66,7 @@ def interaction_specs(plan: GenerationPlan) -> list[dict]:
             key = "leg" if it.action == "kick" else "hand"
             return [{"check": it.action, key: it.side or "any", **n, "person": "both"}]
         return []
-    # the kinds composed since the table was written take their checks from the catalogue
-    out = [dict(s) for s in KIND_CHECKS.get(kind) or kind_checks(kind)]
+    out = [dict(s) for s in kind_checks(kind)]        # the catalogue entry's checks
     if held:
         out.insert(0, {"check": "hands_held"})
     if approach and kind != "approach":
