@@ -37,3 +37,4 @@ def test_people_the_planner_knows_are_planned_as_before():
     for prompt in ("the man and the woman shake hands", "one person pushes the other, who stumbles backwards",
                    "give each other a high five", "they greet each other with a handshake"):
         assert not any(r.startswith("people:") for r in plan(prompt, 2, 6.0).reasons)
+

@@ -28,3 +28,10 @@ def test_two_unknown_clauses_are_two_segments(prompt, persons):
 def test_one_unknown_clause_is_still_the_prompt_as_written():
     plan = embedded_plan("hammer a nail into the wall", 1, None, None)
     assert [s.base for s in plan.segments] == ["a person hammer a nail into the wall"]
+
+
+def test_a_subject_noun_with_its_object_is_a_verb():
+    """"fan yourself": "fan" (a supporter, when it is the subject) is the verb here."""
+    said = embedded_plan("fan yourself with a newspaper", 1, 6.0).segments[0].prompt
+    assert "fan themselves" in said
+    assert embedded_plan("a fan cheers in the stands", 1, 6.0).segments[0].prompt == "a person cheers in the stands"

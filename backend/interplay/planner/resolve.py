@@ -25,6 +25,10 @@ from interplay.planner.verbs import VERBS, doing_nouns, is_verb, lookup, noun_ve
 
 SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest known phrase
 _FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
+# The words after a subject noun with no article that make it a verb with its object ("fan
+# yourself", "fan the flames") rather than a subject ("fan cheers").
+_OBJECT_NEXT = {"yourself", "himself", "herself", "themselves", "oneself", "the", "a", "an", "his",
+                "her", "their", "your", "my", "it", "me", "him", "them", "us"}
 
 
 def _without_subject(words: list[str]) -> list[str]:
@@ -32,6 +36,9 @@ def _without_subject(words: list[str]) -> list[str]:
     i = 0
     while i < len(words) and (words[i] in _FILLER or words[i] in SUBJECT_NOUNS or
                               words[i] in ("two", "one", "he", "she", "they", "someone")):
+        if words[i] in SUBJECT_NOUNS and (i == 0 or words[i - 1] not in _FILLER) and \
+                i + 1 < len(words) and words[i + 1] in _OBJECT_NEXT:
+            break                    # a verb with its object ("fan yourself"), not a subject
         i += 1
     return words[i:] if i < len(words) else words
 
