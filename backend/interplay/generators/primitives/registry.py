@@ -110,15 +110,37 @@ PRIMITIVES: dict[str, Primitive] = _primitives()
 
 
 _BANKS: dict[tuple[int, tuple[str, ...]], tuple[Encoder, np.ndarray, np.ndarray]] = {}
+# Unit embeddings of phrasings, by (encoder, the texts themselves): the primitives' banks and
+# any other phrasings matched against (primitive_steps: a verb entry's own descriptions).
+_EMBEDDED: dict[tuple[int, tuple[str, ...]], tuple[Encoder, np.ndarray]] = {}
 
 
 def _refresh() -> None:
     PRIMITIVES.clear()
     PRIMITIVES.update(_primitives())
     _BANKS.clear()
+    _EMBEDDED.clear()
 
 
 on_change(_refresh)
+
+
+def unit(encoder: Encoder, text: str) -> np.ndarray:
+    """The unit embedding (D,) of one text (a query)."""
+    v = np.asarray(encoder.encode([text]), dtype=np.float64)[0]
+    return v / max(float(np.linalg.norm(v)), 1e-12)
+
+
+def embedded(encoder: Encoder, texts: tuple[str, ...]) -> np.ndarray:
+    """Unit embeddings (K, D) of `texts`, computed once per encoder (the key holds its id and
+    the entry the encoder itself, so a new encoder at a reused id is not served old ones)."""
+    key = (id(encoder), texts)
+    hit = _EMBEDDED.get(key)
+    if hit is None or hit[0] is not encoder:
+        emb = np.asarray(encoder.encode(list(texts)), dtype=np.float64)
+        emb /= np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12)
+        hit = _EMBEDDED[key] = (encoder, emb)
+    return hit[1]
 
 
 def _bank(encoder: Encoder, names: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
@@ -131,8 +153,7 @@ def _bank(encoder: Encoder, names: tuple[str, ...]) -> tuple[np.ndarray, np.ndar
         for d in PRIMITIVES[n].descriptions:
             texts.append(d)
             owner.append(i)
-    emb = np.asarray(encoder.encode(texts), dtype=np.float64)
-    emb /= np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12)
+    emb = embedded(encoder, tuple(texts))
     _BANKS[key] = (encoder, emb, np.array(owner))
     return emb, np.array(owner)
 
@@ -142,9 +163,7 @@ def rank(text: str, encoder: Encoder, names: tuple[str, ...] | None = None
     """Every primitive (or those named) with its similarity to `text`, best first."""
     names = tuple(names or PRIMITIVES)
     emb, owner = _bank(encoder, names)
-    q = np.asarray(encoder.encode([text.strip()]), dtype=np.float64)[0]
-    q /= max(float(np.linalg.norm(q)), 1e-12)
-    sims = emb @ q
+    sims = emb @ unit(encoder, text.strip())
     best = np.full(len(names), -1.0)
     np.maximum.at(best, owner, sims)
     order = np.argsort(-best)

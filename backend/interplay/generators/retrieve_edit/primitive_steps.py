@@ -23,8 +23,10 @@ from interplay.generators.primitives.registry import (
     Primitive,
     activities,
     build,
+    embedded,
     find,
     primitive_of,
+    unit,
 )
 from interplay.generators.retrieval.intent import count_of, side_of
 from interplay.motion.kinematics import continue_from, facing_angle
@@ -89,25 +91,8 @@ def _activity_over_verb(seg: GenerationSegment, encoder) -> tuple[Primitive, flo
     prim, sim = find(text, encoder, acts)
     if sim < ACTIVITY_SIM:
         return None
-    own = float((_described(encoder, tuple(entry.descriptions or [entry.name])) @ _unit(encoder, text)).max())
+    own = float((embedded(encoder, tuple(entry.descriptions or [entry.name])) @ unit(encoder, text)).max())
     return (prim, sim) if sim - own >= ACTIVITY_MARGIN else None
-
-
-def _unit(encoder, text: str) -> np.ndarray:
-    v = np.asarray(encoder.encode([text]), dtype=np.float64)[0]
-    return v / max(float(np.linalg.norm(v)), 1e-12)
-
-
-_DESCRIBED: dict[tuple[int, tuple[str, ...]], tuple[object, np.ndarray]] = {}
-
-
-def _described(encoder, texts: tuple[str, ...]) -> np.ndarray:
-    """Unit embeddings (K, D) of an entry's descriptions, once per encoder."""
-    key = (id(encoder), texts)
-    if key not in _DESCRIBED or _DESCRIBED[key][0] is not encoder:
-        emb = np.asarray(encoder.encode(list(texts)), dtype=np.float64)
-        _DESCRIBED[key] = (encoder, emb / np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12))
-    return _DESCRIBED[key][1]
 
 
 def _said(seg: GenerationSegment) -> list[str]:
