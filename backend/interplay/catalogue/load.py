@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import tomllib
 from collections.abc import Callable
+from functools import lru_cache
 from pathlib import Path
 
 from pydantic import ValidationError
@@ -64,3 +65,18 @@ def use_catalogue(path: Path | str | None) -> None:
         _current["cat"] = read(path)
     for fn in _listeners:
         fn()
+
+
+@lru_cache(maxsize=1)
+def counted_once() -> frozenset[str]:
+    """The words of the actions whose count of one the planner keeps ("does a squat" → "squats
+    once", the checks then count one): each entry marked `once`, by its one-word name ("jump";
+    "boxing jab" by its name "jab")."""
+    out: set[str] = set()
+    for a in catalogue().action:
+        if a.once:
+            out.update(n for n in [a.name, *a.names] if " " not in n)
+    return frozenset(out)
+
+
+on_change(counted_once.cache_clear)

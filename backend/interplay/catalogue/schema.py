@@ -98,9 +98,12 @@ class Action(BaseModel):
     persons: list[int] = Field(default_factory=lambda: [1])
     roles: list[str] = Field(default_factory=list)
     contact: Literal["hands", "hug"] | None = None   # interactions: the two touch (hands; a hug)
+    actor_words: list[str] = Field(default_factory=list)      # interactions: words of the one who starts it
+    responder_words: list[str] = Field(default_factory=list)  # … and of the one who responds
     part: Part | None = None          # verbs: the limb it moves by default
     parts: list[str] = Field(default_factory=list)     # body parts it moves (CoMA's parts)
     counts: bool = False              # it is counted per cycle ("three jumps")
+    once: bool = False                # a count of one said ("a jump", "throws a punch") is kept: "once"
     counts_as: str | None = None      # the counted event the checks see (a hop counts as a jump)
     seconds: float = Field(default=2.0, gt=0)          # one performance / one cycle
     speed: float | None = Field(default=None, gt=0)    # travel: metres per second

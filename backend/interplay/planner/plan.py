@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 
 from interplay.catalogue import grammar as g
+from interplay.catalogue.load import counted_once
 from interplay.catalogue.phrases import tokens, unquoted
 from interplay.catalogue.words import words
 from interplay.planner import lexicon, questions, temporal
@@ -103,8 +104,10 @@ def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temp
 
 # "a tuck jump", "one squat", "a karate front kick": a count of one that the rewrite to the
 # data's words ("jumps", "kicks high forward …") would drop; "jumping jacks" count nothing.
-# The actions `temporal` keeps a count of one for, and spins (retrieval counts their turns).
-ONE_ACTION = g.one_action_rx(temporal.COUNTED_ONCE | {"spin"})
+# The actions the catalogue marks `once` (`temporal` keeps their count of one), and spins
+# (retrieval counts their turns).
+def _one_action(text: str):
+    return g.one_action_rx(counted_once() | {"spin"}).search(text)
 
 
 def _says_count(text: str) -> bool:
@@ -113,9 +116,9 @@ def _says_count(text: str) -> bool:
 
 
 def _count_of_one(action: Action, clause: str, repeat: int, reasons: list[str]) -> None:
-    """Keep a count of one the words asked for (ONE_ACTION) as "once" on the action."""
-    said = ONE_ACTION.search(split_subject(clause)[1])      # not the subject's "a person"
-    if repeat != 1 or said is None or _says_count(action.text) or ONE_ACTION.search(action.text):
+    """Keep a count of one the words asked for (`_one_action`) as "once" on the action."""
+    said = _one_action(split_subject(clause)[1])      # not the subject's "a person"
+    if repeat != 1 or said is None or _says_count(action.text) or _one_action(action.text):
         return
     action.text = f"{action.text} once"
     if action.verb is None or action.verb.kind != "part":     # a kick's base is the stand

@@ -22,6 +22,7 @@ from functools import partial
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.grammar import COUNT_SAID
+from interplay.catalogue.load import counted_once
 from interplay.catalogue.phrases import Found, unquoted
 from interplay.catalogue.words import words as listed
 from interplay.planner.verbs import doing_nouns, gerund, lookup, noun_verb, third
@@ -44,10 +45,6 @@ class Clause:
     hold: str = ""                         # words that keep its pose to the end ("waits")
 
 
-# Actions whose count of one the words keep ("does a squat" → "squats once"): the checks and
-# the retrieval count them.
-COUNTED_ONCE = {"jump", "kick", "punch", "squat", "hop", "cartwheel", "flip", "somersault",
-                "lunge", "jab", "leap"}
 
 
 def _verb_in(word: str, like: str) -> str | None:
@@ -124,7 +121,7 @@ def _noun_to_verb(text: str) -> tuple[str, int]:
         if verb is None:
             continue
         around = " around" if verb in ("turn", "spin") and "full" in (adj or "") else ""
-        if det in ("a", "an", "one") and verb in COUNTED_ONCE and not COUNT_SAID.search(rest):
+        if det in ("a", "an", "one") and verb in counted_once() and not COUNT_SAID.search(rest):
             around += " once"               # "does one squat", "throws a punch": one, said
         return f"{head}{third(verb)}{around}{rest}", count
     return text, 1

@@ -35,34 +35,13 @@ _NOT_TOGETHER = ("danc*", "salsa", "tango", "waltz*", "wrestl*")
 # Prompts this generator leaves to another (checked before the encoder's guess).
 _NOT_MINE = ("push up*", "pushup*", "danc*", "leader", "follower", "twirl*", "salsa", "tango",
              "waltz*", "jump*")
-_HELD = ("hand in hand", "hold* hands", "holding each other's hand", "holding each other's hands",
-         "holding each others hands")
-_APPROACH = tuple(f"{v} {to}" for v in ("walk*", "come*", "came", "run*", "ran", "step*", "mov*", "head*")
-                  for to in ("to each other", "towards each other", "toward each other",
-                             "up to each other")) + ("approach*", "walk* up to")
 # The subject of "one stops": the stop counts after one of these, in the same sentence.
 _ONE = ("one", "the other", "one of them", "one person")
 # What the encoder's nearest description may be instead: prompts left to another generator.
 _OTHERS = ("two people dance together", "two people sit down",
            "two people salute each other", "two people exercise", "two people clap")
 MIN_SIMILARITY = 0.6
-# Role words: who does the kind's first action (actor) and who responds.
-_ACTOR = {"push": ("push*", "shov*"), "wave_back": ("wav*",), "follow": ("lead*", "ahead", "in front"),
-          "one_stops": ("stop*", "halt*", "stand still", "stands still"),
-          "help_up": ("help*", "pull*", "reach*", "lend*"), "hand_over": ("hand*", "give*", "gave", "pass*", "offer*"),
-          "touch": ("tap", "taps", "pat", "pats", "touches", "grab*", "pok*", "nudg*"),
-          "chase": ("chases", "chasing", "pursu*", "run* after", "catch*"),
-          "carry": ("carry", "carries", "carrying", "carried", "giv*", "lift*", "let*"), "lead": ("lead*", "pull*", "tow*", "guid*")}
-_RESPONDER = {"push": ("stumbl*", "pushed", "fall*", "stagger*", "knock*"), "wave_back": ("wav* back", "return*"),
-              "follow": ("follow*", "behind"),
-              "one_stops": ("keep walking", "keeps walking", "keep on walking", "keeps on walking", "continues"),
-              "mirror": ("cop*", "mirror*", "imitat*", "mimic*"),
-              "help_up": ("get* up", "gets up", "rise*", "lying", "fallen", "on the floor", "stand* up"),
-              "hand_over": ("receiv*", "take*", "took", "accept*"),
-              "touch": ("is tapped", "tapped", "patted", "touched", "grabbed", "turns around"),
-              "chase": ("flee*", "run* away", "escap*", "is chased", "chased", "runs from"),
-              "carry": ("ride", "rides", "riding", "rode", "is carried", "climb*", "hop* on", "get* on", "gets a"),
-              "lead": ("is led", "led by", "follow*", "trail*", "is pulled", "is guided")}
+# What the one who starts it does, as the reasons say it.
 _VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_stops": "stops",
          "mirror": "leads (the other mirrors)", "help_up": "helps", "hand_over": "hands it over",
          "touch": "touches", "chase": "chases", "spar": "strikes first", "carry": "carries",
@@ -124,6 +103,34 @@ def entries() -> tuple[_Entry, ...]:
 
 
 on_change(entries.cache_clear)
+
+
+@lru_cache(maxsize=1)
+def _roles() -> tuple[dict[str, tuple[str, ...]], dict[str, tuple[str, ...]]]:
+    """The kinds' role words from their catalogue entries: who starts it (the pusher) and who
+    responds (the pushed), for the kinds that name them."""
+    actor: dict[str, tuple[str, ...]] = {}
+    responder: dict[str, tuple[str, ...]] = {}
+    for a in catalogue().of_kind("interaction"):
+        kind = a.made_by.composition
+        if kind in KINDS and a.actor_words:
+            actor[kind] = tuple(a.actor_words)
+        if kind in KINDS and a.responder_words:
+            responder[kind] = tuple(a.responder_words)
+    return actor, responder
+
+
+on_change(_roles.cache_clear)
+
+
+def _listed(name: str) -> tuple[str, ...]:
+    return tuple(catalogue().words.lists.get(name, ()))
+
+
+def _approach() -> tuple[str, ...]:
+    """"walks towards each other", "approaches": they walk up to each other first."""
+    return tuple(f"{v} {to}" for v in _listed("approach_moves") for to in _listed("approach_to")) \
+        + _listed("approach")
 
 
 def _match(words, text: str, not_before=()) -> str | None:
@@ -190,9 +197,10 @@ def _encoder_read(prompt: str, encoder) -> tuple[str | None, str, float]:
 
 
 def _starts(kind: str, text: str) -> bool:
+    actor = _roles()[0]
     if kind == "wave_back":       # waves, and not back
-        return bool(_match(_ACTOR[kind], text)) and not _match(("back",), text)
-    return bool(_match(_ACTOR.get(kind, ()), text))
+        return bool(_match(actor[kind], text)) and not _match(("back",), text)
+    return bool(_match(actor.get(kind, ()), text))
 
 
 def _first_responds(kind: str, prompt: str) -> bool:
@@ -216,10 +224,11 @@ def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
     starting count for it, its words for responding against it), else by the prompt (the
     'one' it names first starts, unless what that one does is the response)."""
     verb = _VERB.get(kind, "starts")
-    if roles and kind in _RESPONDER:
+    actor, responder = _roles()
+    if roles and kind in responder:
         texts = [str(roles.get("0", "")), str(roles.get("1", ""))]
-        responds = [bool(_match(_RESPONDER[kind], t)) for t in texts]
-        starts = [_starts(kind, t) if kind in _ACTOR else False for t in texts]
+        responds = [bool(_match(responder[kind], t)) for t in texts]
+        starts = [_starts(kind, t) if kind in actor else False for t in texts]
         score = [int(s) - int(r) for s, r in zip(starts, responds)]
         if score[0] != score[1]:
             who = int(np.argmax(score))
@@ -227,7 +236,7 @@ def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
     if kind in _FIRST_RESPONDS and _first_responds(kind, prompt):
         return 1, f"person 1 {verb} (the prompt's first-named one responds)"
     if kind in _RESPONSE_FIRST:
-        said = [words_rx(_RESPONDER[kind]).search(prompt), words_rx(_ACTOR[kind]).search(prompt)]
+        said = [words_rx(responder[kind]).search(prompt), words_rx(actor[kind]).search(prompt)]
         if said[0] and (said[1] is None or said[0].start() < said[1].start()):
             return 1, f"person 1 {verb} (the prompt names the response first: '{said[0].group(0)}')"
     return 0, f"person 0 {verb} (the one the prompt names first)"
@@ -262,8 +271,8 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
     if kind is None:
         return None
     actor, who = _actor(kind, prompt, roles)
-    approach = kind == "approach" or (kind in APPROACHABLE and bool(_match(_APPROACH, prompt)))
-    held = kind == "side_by_side" and bool(_match(_HELD, prompt))
+    approach = kind == "approach" or (kind in APPROACHABLE and bool(_match(_approach(), prompt)))
+    held = kind == "side_by_side" and bool(_match(_listed("hands_held"), prompt))
     part = None
     if kind == "touch":
         part, where = touched_part(prompt)
@@ -272,7 +281,7 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
         reasons.append("they walk up to each other first")
     if held:
         reasons.append("hands held")
-    if kind in _RESPONDER:
+    if kind in _roles()[1]:
         reasons.append(who)
     return Script(kind, actor, approach, held, tuple(reasons), part,
                   None if guessed is None else round(guessed, 4))
