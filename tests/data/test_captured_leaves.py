@@ -179,30 +179,36 @@ def test_a_retrieved_salsa_exports_the_dancers_own_heads_and_hands():
 
 
 def test_views_and_joins():
-    """A mirrored view swaps the hands and reflects them, a reversed one runs backwards; the
-    frames at a join between two pieces are left to the rig, which turns its derived leaves
-    into the captured ones over LEAF_BLEND frames: each step there smaller than the jump from
-    one capture's head to the other's."""
-    from interplay.motion.captured_leaves import SEAM, _source_local, _view_local, plan_leaves
-    from interplay.motion.rig.leaves import LEAF_BLEND
+    """A mirrored view swaps the hands and reflects them, a reversed one runs backwards; at a
+    join the second piece's first FADE frames are cross-faded from the first capture's next
+    frames as the stitcher fades the joints (smoothstep, by slerp): the head passes from one
+    capture to the other in steps smaller than the jump between them; a track shorter than its
+    segment holds its last leaf; the stitcher's FADE is the leaves'."""
+    from interplay.generators.retrieval.stitch import FADE as STITCH_FADE
+    from interplay.motion.captured_leaves import FADE, _source_local, _view_local, plan_leaves
     from interplay.motion.rig.steps import quat_steps
+    assert FADE == STITCH_FADE
     base = _source_local("cmu:02_01", 0)
     mirrored = _view_local("cmu:02_01#mirrored#reversed", 0)
     np.testing.assert_allclose(mirrored["left_wrist"][::-1] * [1, 1, -1, -1], base["right_wrist"])
-    plan = {"generator": "retrieval", "segments": [{"start": 0, "end": 50, "retrieval": {
+    plan = {"generator": "retrieval", "segments": [{"start": 0, "end": 55, "retrieval": {
         "mode": "single", "synthetic": False, "tracks": [[
             {"clip": "cmu:02_01", "people": [0], "start": 0, "end": 25, "score": 1.0},
             {"clip": "cmu:02_02", "people": [0], "start": 10, "end": 35, "score": 1.0}]]}}]}
-    leaves = plan_leaves(plan, 1, 50)[0]
-    gap = np.flatnonzero(np.isnan(leaves["head"][:, 0]))
-    assert list(gap) == list(range(25 - SEAM, 25 + SEAM))
-    # The rig on joints of the first capture (the joins' rotations are what is tested).
-    joints = np.asarray(next(c for c in default_clips() if c.id == "cmu:02_01").people[0][:50], np.float64)
-    rig = solve_rig(joints, leaves=leaves)
-    head = rig.rotations[:, J["head"]]
-    np.testing.assert_allclose(np.abs(np.sum(head[:25 - SEAM] * leaves["head"][:25 - SEAM], -1)), 1.0, atol=1e-9)
-    jump = quat_steps(leaves["head"][[25 - SEAM - 1, 25 + SEAM]])[0]     # the captures' own jump
-    steps = quat_steps(head)
-    assert steps[25 - SEAM - 1:25 + SEAM].max() < jump               # spread over the join
-    assert LEAF_BLEND >= SEAM
-
+    leaves = plan_leaves(plan, 1, 55)[0]
+    other = _source_local("cmu:02_02", 0)
+    head = leaves["head"]
+    assert np.isfinite(head).all()
+    np.testing.assert_array_equal(head[:25], base["head"][:25])
+    np.testing.assert_array_equal(head[25 + FADE:50], other["head"][10 + FADE:35])
+    np.testing.assert_array_equal(head[50:], np.repeat(head[49:50], 5, axis=0))      # held
+    # Half way through the fade, half way between the continuation and the new capture.
+    mid = 25 + FADE // 2 - 1
+    a, b = base["head"][25 + FADE // 2 - 1], other["head"][10 + FADE // 2 - 1]
+    x = (FADE // 2) / (FADE + 1)
+    w = x * x * (3 - 2 * x)
+    ab = np.degrees(2 * np.arccos(min(1.0, abs(float(a @ b)))))
+    got = np.degrees(2 * np.arccos(min(1.0, abs(float(a @ head[mid])))))
+    assert got == pytest.approx(w * ab, abs=0.01)
+    jump = quat_steps(np.stack([base["head"][24], other["head"][10]]))[0]
+    assert quat_steps(head[23:25 + FADE + 1]).max() < max(jump, 1.0)

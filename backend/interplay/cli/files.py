@@ -141,6 +141,13 @@ def cmd_export_leaves(args) -> int:
     """The leaves' steps on the library (`rig/steps.py`): per leaf, how many frame steps of
     its channel exceed max(30°, its parent bone's turn) and by how much at worst, against the
     bone's whole turn (the test's measure) and against its direction's turn only."""
+    if args.captured or args.generated:            # the captures' own (`leaves_report.py`)
+        from interplay.cli.leaves_report import captured_report, generated_report
+        if args.captured:
+            captured_report()
+        if args.generated:
+            generated_report(args.generated)
+        return 0
     import numpy as np
 
     from interplay.motion.clip import default_clips
@@ -212,4 +219,9 @@ def register(sub) -> None:
     p = sub.add_parser("export-leaves", help="head, wrist and toe steps a frame over max(30°, the "
                                              "parent bone's turn) on the library's clips (a table)")
     p.add_argument("--every", type=int, default=1, help="every n-th clip (default all, ~1 min)")
+    p.add_argument("--captured", action="store_true", help="instead: per source, the clips carrying "
+                   "the captures' own head and hands, and their steps exported with them (~2 min)")
+    p.add_argument("--generated", type=int, default=0, metavar="SEEDS",
+                   help="instead: the default generator's motions on fixed prompts × SEEDS, exported "
+                        "as the API does: captured share, channel turns, steps")
     p.set_defaults(func=cmd_export_leaves)

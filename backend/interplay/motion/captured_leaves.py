@@ -75,10 +75,10 @@ def captured_local(joints: np.ndarray, world: dict[str, np.ndarray], *, fps: flo
     return out
 
 
-# Frames at each join of two captured pieces (and at a hold) left to the derived rotations,
-# which `rig.solve_rig` blends into the captured ones over LEAF_BLEND frames: the stitcher
-# blends the joints across a join, the captures' own hands and heads would jump there.
-SEAM = 2
+# Frames over which retrieval's stitcher cross-fades each piece from the last one's
+# continuation (`generators/retrieval/stitch.FADE`; a test keeps the two equal): the leaves
+# are cross-faded over the same frames with the same smoothstep weights, by slerp.
+FADE = 10
 _MIRROR_SWAP = {"head": "head", "left_wrist": "right_wrist", "right_wrist": "left_wrist"}
 
 
@@ -109,47 +109,80 @@ def _view_local(view: str, person: int) -> dict[str, np.ndarray]:
     return local
 
 
+def _tracks(seg: dict) -> list[list[tuple[str, int, int, int]]]:
+    """Per person, a segment's pieces as (view, source person, start, end)."""
+    choice = seg["retrieval"]
+    if choice["mode"] == "pair":
+        return [[(p["clip"], int(p["people"][i]), int(p["start"]), int(p["end"])) for p in choice["tracks"][0]]
+                for i in range(len(choice["tracks"][0][0]["people"]))]
+    return [[(p["clip"], int(p["people"][0]), int(p["start"]), int(p["end"])) for p in track]
+            for track in choice["tracks"]]
+
+
+def _faded(cont: np.ndarray, new: np.ndarray) -> np.ndarray:
+    """The first n = len(cont) rows of `new` (n', 4) cross-faded from `cont` (n, 4) as
+    `stitch.crossfade` fades positions (smoothstep of i / (n + 1)), by slerp; NaN where
+    either is."""
+    from interplay.motion.rig import slerp
+    out = new.copy()
+    n = len(cont)
+    x = np.arange(1, n + 1) / (n + 1)
+    ok = np.isfinite(cont).all(-1) & np.isfinite(new[:n]).all(-1)
+    out[:n][~ok] = np.nan
+    out[:n][ok] = slerp(cont[ok], new[:n][ok], (x * x * (3 - 2 * x))[ok])
+    return out
+
+
 def piece_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:
-    """Per person, the captured leaves of the frames a plan's segments' captured pieces give
-    (`generators/plan.CapturePiece`: clip or view, people, frames [start, end), laid end to
-    end over the segment, as retrieval's stream plays them), (frames, 4) with NaN rows where
-    it has none (another source, a hold, SEAM frames at a join); [{}…] where no piece carries
-    any or the plan does not fit. Any generator's plan: the caller knows whether its frames
-    are the pieces' (`plan_leaves`: retrieval's; `generators/retrieve_edit/leaves.py` masks
-    what its edits changed)."""
+    """Per person, the captured leaves (frames, 4) of the frames a plan's captured pieces give
+    (`generators/plan.CapturePiece`: clip or view, people, frames [start, end), laid end to end
+    over each segment), as retrieval's stitcher plays them: each piece after the first
+    cross-faded over its first FADE frames from the last one's continuation (that capture's
+    next frames, or its last leaf held where it has none, or a held pose's), a track shorter
+    than its segment holding its last leaf; NaN rows where a capture carries none. [{}…] where
+    none carries any or the plan does not fit. Any generator's plan: the caller knows whether
+    its frames are the pieces' (`plan_leaves`: retrieval's; `generators/retrieve_edit/
+    leaves.py` masks what its edits changed)."""
     empty: list[dict[str, np.ndarray]] = [{} for _ in range(persons)]
     if not isinstance(plan, dict):
         return empty
-    out = [{leaf: np.full((frames, 4), np.nan) for leaf in LEAF_NAMES} for _ in range(persons)]
-    found = False
+    out = [np.full((len(LEAF_NAMES), frames, 4), np.nan) for _ in range(persons)]
+    # per person, the last piece's (view leaves (3, T, 4), its end) or None after a hold
+    last: list[tuple[np.ndarray, int] | None] = [None] * persons
+    started = [False] * persons
     try:
         for seg in plan.get("segments") or []:
-            choice = seg.get("retrieval")
-            if not choice:
-                continue
-            tracks = choice["tracks"]
-            for t, track in enumerate(tracks):
-                at = int(seg["start"])
-                for piece in track:
-                    s, e = int(piece["start"]), int(piece["end"])
-                    for i, source_person in enumerate(piece["people"]):
-                        person = i if choice["mode"] == "pair" else t
-                        local = _view_local(piece["clip"], int(source_person))
-                        if person >= persons or at + e - s > frames:
-                            return empty
-                        for leaf, q in local.items():
-                            if e > len(q):
-                                return empty
-                            lo, hi = at + (SEAM if at > 0 else 0), at + e - s - (SEAM if at + e - s < frames else 0)
-                            if hi > lo:
-                                out[person][leaf][lo:hi] = q[s + lo - at:s + hi - at]
-                                found = True
-                    at += e - s
-    except (KeyError, TypeError, ValueError):
+            if not seg.get("retrieval"):
+                return empty
+            for person, track in enumerate(_tracks(seg)):
+                if person >= persons:
+                    return empty
+                at, mine = int(seg["start"]), out[person]
+                for ref, source, s, e in track:
+                    local = _view_local(ref, source)
+                    n = max((len(q) for q in local.values()), default=e)
+                    if e > n or at + e - s > frames:
+                        return empty
+                    view = np.stack([local.get(leaf, np.full((n, 4), np.nan)) for leaf in LEAF_NAMES])
+                    block = view[:, s:e].copy()
+                    if started[person]:
+                        k = min(FADE, e - s)
+                        prev = last[person]
+                        # the continuation: the last capture's next frames, then its last row held
+                        tail = prev[0][:, prev[1]:prev[1] + k] if prev is not None else mine[:, :0]
+                        held = tail[:, -1:] if tail.shape[1] else mine[:, at - 1:at]
+                        cont = np.concatenate([tail, np.repeat(held, k - tail.shape[1], axis=1)], axis=1)
+                        block = np.stack([_faded(cont[i], block[i]) for i in range(len(LEAF_NAMES))])
+                    mine[:, at:at + e - s] = block
+                    last[person], started[person], at = (view, e), True, at + e - s
+                if at < int(seg["end"]):                   # the stitcher holds the last pose
+                    mine[:, at:int(seg["end"])] = mine[:, at - 1:at]
+                    last[person] = None
+    except (KeyError, TypeError, ValueError, IndexError):
         return empty
-    if not found:
-        return empty
-    return [{k: v for k, v in person.items() if np.isfinite(v).any()} for person in out]
+    leaves = [{leaf: person[i] for i, leaf in enumerate(LEAF_NAMES) if np.isfinite(person[i]).any()}
+              for person in out]
+    return leaves if any(leaves) else empty
 
 
 def plan_leaves(plan: dict | None, persons: int, frames: int) -> list[dict[str, np.ndarray]]:

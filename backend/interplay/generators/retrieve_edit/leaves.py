@@ -3,7 +3,7 @@ from its plan at export time (the plan is all an export has; `RetrieveEditGenera
 is replayed on the leaves, not on the joints):
 
 - frames a captured piece gives keep the capture's leaves (`captured_leaves.piece_leaves`:
-  the same pieces retrieval's stream lays, SEAM frames at each join left to the rig);
+  the same pieces retrieval's stream lays, cross-faded at each join as its joints are);
 - a segment a primitive makes (`primitive_steps.lay`, and its EASE frames after it): every
   leaf derived, the primitive's own (a nod turns the head with the neck, `rig/leaves.py`);
 - a held pose (`holds`: the stand low-passed, a squat frozen, a leg lifted over a calm
