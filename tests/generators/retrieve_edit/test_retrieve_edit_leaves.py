@@ -193,3 +193,34 @@ def test_the_json_export_rig_carries_the_captured_leaves(made):
     derived = solve_rig(j32, floor=floor_height([j32])).rotations[:, J["head"]]
     assert np.median(np.degrees(2 * np.arccos(np.clip(np.abs(np.sum(derived * want, -1)), 0, 1)))) > 5.0
     assert "leaves" not in doc["people"][0]         # NaN rows: the rig carries them
+
+
+def test_the_api_exports_the_captured_turns(made, tmp_path):
+    """GET /api/motions/{id}/export of a stored retrieve-then-edit wave: the BVH's head channel
+    is the capture's on every frame, the GLB differs from one with derived leaves only."""
+    from fastapi.testclient import TestClient
+
+    from interplay.api.app import create_app
+    from interplay.generators.retrieval.index import RetrievalIndex
+    from interplay.generators.router import Router
+    from interplay.motion.clip import default_clips
+    from interplay.motion.formats.gltf import write_glb
+    from interplay.settings import Settings
+    from interplay.text.encoder import get_encoder
+    (tmp_path / "var").mkdir()
+    settings = Settings(var_dir=tmp_path / "var", frontend_dist=tmp_path / "dist",
+                        database_url=f"sqlite:///{tmp_path / 'var' / 'test.db'}", job_queue="embedded")
+    joints, plan = made(WAVE)
+    router = Router(RetrievalIndex(list(default_clips()[:2]), get_encoder()), spam=None, reason="test")
+    with TestClient(create_app(settings, generator=router)) as client:
+        people = [joints.astype(np.float32)]
+        mid = client.app.state.repo.create(prompt=WAVE, people=people, seconds=6.0, seed=0, plan=plan).id
+        got = client.get(f"/api/motions/{mid}/export", params={"format": "bvh"})
+        assert got.status_code == 200
+        b = read_bvh(got.text)
+        glb = client.get(f"/api/motions/{mid}/export", params={"format": "glb"}).content
+    j32 = people[0].astype(np.float64)
+    captured = piece_leaves(plan, 1, len(j32))[0]
+    rot, _ = b.local_transforms()
+    assert _angle(rot[:, b.index("head")], quat_to_matrix(captured["head"])).max() < 0.01
+    assert glb != write_glb([j32], name=WAVE)
