@@ -224,3 +224,21 @@ def test_the_api_exports_the_captured_turns(made, tmp_path):
     rot, _ = b.local_transforms()
     assert _angle(rot[:, b.index("head")], quat_to_matrix(captured["head"])).max() < 0.01
     assert glb != write_glb([j32], name=WAVE)
+
+
+def test_the_cli_json_export_carries_them_too(made, tmp_path):
+    """`interplay export --format json` of the same motion file: its rig's head is the API's."""
+    import json
+
+    from interplay.cli.main import main
+    from interplay.motion.motion import Motion
+    from interplay.motion.rig import rig_from_json
+    joints, plan = made(WAVE)
+    path, out = tmp_path / "m.json", tmp_path / "out.json"
+    path.write_text(json.dumps(Motion(people=[joints.astype(np.float32)], plan=plan, prompt=WAVE).to_json()))
+    assert main(["export", str(path), "--format", "json", "--out", str(out)]) == 0
+    rig = rig_from_json(json.loads(out.read_text())["people"][0])
+    j32 = joints.astype(np.float32).astype(np.float64)
+    want = solve_rig(j32, floor=floor_height([j32]), leaves=export_leaves(plan, 1, len(j32))[0])
+    np.testing.assert_allclose(np.abs(np.sum(rig.rotations[:, J["head"]] * want.rotations[:, J["head"]], -1)),
+                               1.0, atol=1e-5)
