@@ -131,11 +131,7 @@ def back_rx(travel_forms) -> re.Pattern:
     return rx(rf"\b(?:{verbs})\s+back\b{BACK_NOT}")
 
 
-# Held poses: on one leg (a stance or a lifted leg held), a squat held.
-ONE_LEG = re.compile(r"\b(?:stand\w*|balanc\w*|stay\w*|remain\w*)\b[^.]*?\bon (?:one|a single|the (?:left|right)"
-                     r"|(?:your|his|her|their) (?:left|right)) (?:leg|foot)\b"
-                     r"|\b(?:lift|rais)\w* (?:one|a|the (?:left|right)|(?:your|his|her|their) (?:left|right)) "
-                     r"(?:leg|foot)\b[^.]*\b(?:balanc|hold)\w*")
+# Held poses: the side of a leg stood on or lifted (words.toml's `one_leg` says it is held), a squat held.
 STANCE = re.compile(r"\bon (?:the |your |his |her |their )?(left|right) (?:leg|foot)\b")
 LIFTED = re.compile(r"\b(?:lift|rais)\w* (?:the |your |his |her |their )?(left|right)")
 HELD_AROUND = r"\b(?:hold\w*|stay\w*|remain\w*|keep\w*)\b[^.]*"       # "… holds it", "stays in …"
@@ -213,8 +209,7 @@ CONTEXT_CELEBRATION = re.compile(r"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|thei
 # --- the planner's sentence structure (planner/plan.py) ---
 WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
 CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
-STRIKING_WHILE = re.compile(r"\s+while\s+(?:striking|assuming|getting\s+into|moving\s+into)\s+([^,.;]+)",
-                            re.IGNORECASE)
+
 
 
 def one_action_rx(countable) -> re.Pattern:
@@ -334,13 +329,6 @@ PATH_TURNS = re.compile(r"\b(\d+(?:\.\d+)?|one|two|three|four|five)\s+(?:times|t
 PATH_CLOCK = re.compile(r"\b(?:turns?|turning|turned|heads?|goes|walks|runs)?\s*(left|right)?\s*"
                     r"(?:at|to|towards?|toward)\s+(\d{1,2}|one|two|three|four|five|six|seven|eight|"
                     r"nine|ten|eleven|twelve)\s*o'?\s*clock\b")
-
-
-# --- directions of travel (planner/manner/travel.py) ---
-TRAVEL_BACK = re.compile(r"\bbackwards?\b|\bin\s+reverse\b|\bmoonwalk|"
-                   r"(?<!the\s)(?<!their\s)(?<!his\s)(?<!her\s)(?<!its\s)(?<!your\s)\bback\b"
-                   r"(?!\s+(?:up|to|towards?|home|and\s+forth|into|in\b|at\b|on\b|down|where|"
-                   r"from|of\b|onto|inside|over))")
 
 
 # --- held poses (planner/manner/holds.py) ---

@@ -29,6 +29,7 @@ from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
 from interplay.planner.decompose import POSTURE_BASE, Action, decompose, plain, split_subject
 from interplay.planner.manner.holds import continues_hold
+from interplay.planner.manner.struck import onset_poses
 from interplay.planner.manner.travel import direction, untangle
 from interplay.planner.pair.actors import actors as who_acts
 from interplay.planner.pair.named import plain_people
@@ -37,7 +38,7 @@ from interplay.planner.resolve import coverage_of, not_understood, resolve
 from interplay.planner.schema import MAX_REPEAT, Plan
 from interplay.planner.segments import MAX_SECONDS, Step, timed
 from interplay.planner.trajectory_text import parse as parse_trajectory
-from interplay.planner.verbs import gerund, lookup
+from interplay.planner.verbs import gerund
 from interplay.text.encoder import get_encoder
 
 MAX_PROMPT = 500
@@ -66,25 +67,6 @@ def _check(prompt, persons, seconds) -> None:
     if seconds is not None and (not isinstance(seconds, (int, float)) or not math.isfinite(seconds)
                                 or not 0 < seconds <= MAX_SECONDS):
         raise ValueError(f"seconds must be in (0, {MAX_SECONDS:g}], got {seconds!r}")
-
-
-def _onset_poses(text: str) -> tuple[str, list[str]]:
-    """"runs in a zigzag while striking <pose>" → "runs in a zigzag, then runs in a zigzag holding
-    <pose>": a pose struck during travel is a second step (the pose is then held)."""
-    m = g.STRIKING_WHILE.search(text)
-    entry = lexicon.find(m.group(1)) if m else None
-    if m is None or entry is None or entry.hold is None:
-        return text, []
-    head = text[:m.start()]
-    start = max(head.rfind(c) for c in ",.;") + 1
-    clause = head[start:]
-    words = temporal.normalize(clause).split()
-    if not any((h := lookup(w)) and h[0].kind == "travel" for w in words):
-        return text, []
-    again = split_subject(" ".join(words))[1]
-    new = f"{head}, then {again} holding {m.group(1)}{text[m.end():]}"
-    return new, [f"temporal: '{m.group(0).strip()}' during travel → the pose is struck, then held "
-                 f"while travelling ('{again}' twice)"]
 
 
 def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temporal.Clause]:
@@ -184,7 +166,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             text, why = questions.answer(text, None)
             reasons.append(f"similarity unavailable ({type(exc).__name__})")
         reasons.append(why)
-    for step in (strip_context, _onset_poses):
+    for step in (strip_context, onset_poses):
         text, notes = step(text)
         reasons.extend(notes)
     if persons == 2 and vocabulary is not None:     # "a waiter … a guest": one person … the other

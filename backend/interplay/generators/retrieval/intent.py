@@ -215,7 +215,7 @@ def hold_of(prompt: str) -> str | None:
     lifted), "squat" (held down), "still" (no fidgeting), or None. Held poses no capture holds
     for long (retrieve_edit.holds lays them over a stand or a squat)."""
     t = prompt.lower()
-    if g.ONE_LEG.search(t) and not _words(_counted("jump") + _counted("kick")).search(t):
+    if any(words("one_leg").search(sentence) for sentence in t.split(".")) and not _words(_counted("jump") + _counted("kick")).search(t):
         stance, lifted = g.STANCE.search(t), g.LIFTED.search(t)
         side = (lifted.group(1) if lifted else
                 {"left": "right", "right": "left"}[stance.group(1)] if stance else "right")

@@ -15,7 +15,6 @@ forward and moves backwards; `untangle` drops a straight path that only restates
 
 from __future__ import annotations
 
-from interplay.catalogue import grammar as g
 from interplay.catalogue.words import tokens, words
 from interplay.planner.schema import TrajectorySpec, Travel
 from interplay.planner.verbs import Verb
@@ -29,13 +28,26 @@ LATERAL = {"step", "shuffle", "hop", "jump", "leap", "slide", "dodge", "lunge", 
 
 _SIDES = {"left", "leftward", "leftwards", "right", "rightward", "rightwards"}
 
+# "back" after these (and one space) is the body's ("lies on his back"), not a way to go
+_OWNERS = ("the", "their", "his", "her", "its", "your")
+
+
+def _backward(text: str) -> bool:
+    """Does the (lower-case) text say to go backwards (words.toml's `travel_back`)?"""
+    for found in words("travel_back").finditer(text):
+        before = text[:found.start]
+        if not (found.text == "back" and before[-1:].isspace() and before[:-1].endswith(_OWNERS)):
+            return True
+    return False
+
+
 def direction(text: str, verb: Verb | None) -> Travel | None:
     """The direction of travel a clause states for its body, or None (not stated, or a body
     that does not travel)."""
     if verb is None or not (verb.kind == "travel" or verb.base in MOVING):
         return None
     t = text.lower()
-    if g.TRAVEL_BACK.search(t):
+    if _backward(t):
         return "backward"
     side = next((w.text for w in tokens(t) if w.text in _SIDES), None)     # "to the left", "leftwards"
     if side and (words("sideways").search(t) or verb.base in LATERAL):
