@@ -2,7 +2,7 @@
 (docs/images/blender-wave.png, docs/images/blender-nod.png, shown in docs/api.md § Exports).
 
 Each motion is exported as a GLB (`formats.gltf.write_glb`, the skinned mesh, with the
-motion's explicit head/wrist rotations), imported by Blender's own glTF importer, headless,
+head/wrist rotations every export gives: an edit's, the captures' own), imported by Blender's own glTF importer, headless,
 and rendered with the Workbench engine at a few frames, side by side in one PNG (each frame
 stamped with its number, 20 fps from 0). Made with Debian's Blender 3.4.1:
 
@@ -21,7 +21,7 @@ file, which (inside Blender) imports it and renders. The camera is orthographic,
 person's upper body, between the neck and the joint watched (`--watch`), `--size` metres high
 (the view is taken from the person's facing at the first frame: "front", "side" from their
 right, "left-side", "three-quarter" from front right). `--no-leaves` renders the derived
-head and wrists instead of the motion's explicit ones.
+head and wrists instead of the edit's and the captures' own.
 """
 
 from __future__ import annotations
@@ -97,6 +97,7 @@ def main(argv: list[str]) -> int:
     from interplay.motion import skeleton as sk
     from interplay.motion.formats.gltf import write_glb
     from interplay.motion.motion import Motion
+    from interplay.pipeline.leaves import captured_since
 
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("motion", help="Motion JSON file")
@@ -106,7 +107,7 @@ def main(argv: list[str]) -> int:
     ap.add_argument("--watch", default="head", help="the joint the camera frames with the neck")
     ap.add_argument("--size", type=float, default=1.0, help="the view's height (m)")
     ap.add_argument("--no-leaves", action="store_true",
-                    help="leave out the motion's explicit head/wrist rotations (the derived ones)")
+                    help="leave out the edit's and the captures' head/wrist rotations (the derived ones)")
     ap.add_argument("--out-dir", default=str(Path(__file__).resolve().parents[1] / "docs" / "images"))
     ap.add_argument("--blender", default="blender")
     a = ap.parse_args(argv)
@@ -126,7 +127,9 @@ def main(argv: list[str]) -> int:
     camera = watched + 4.0 * look
     with tempfile.TemporaryDirectory() as tmp:
         glb = Path(tmp) / f"{a.name}.glb"
-        glb.write_bytes(write_glb([joints], fps=motion.fps, leaves=[{} if a.no_leaves else motion.leaves_of(0)]))
+        # The leaves the exports give (`pipeline.leaves`): an edit's over the captures' own.
+        leaves = {} if a.no_leaves else {**captured_since(motion.plan, 1, motion.frames)[0], **motion.leaves_of(0)}
+        glb.write_bytes(write_glb([joints], fps=motion.fps, leaves=[leaves]))
         args = {"glb": str(glb), "tmp": tmp, "frames": [f + 1 for f in frames],
                 "out": str(Path(a.out_dir) / f"blender-{a.name}.png"), "width": 320, "height": 320,
                 "ortho": a.size, "target": (to_z @ watched).tolist(), "camera": (to_z @ camera).tolist()}
