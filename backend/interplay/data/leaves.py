@@ -22,8 +22,10 @@ format's bones are read by `leaves_read.py`, which replays the positions' own pi
 the rotations (the converter's lead-in or T-pose cut, the capture rate's resampling to 20 fps
 by slerp at the very times the positions take, the canonical yaw). Toes are not carried yet:
 the rig takes explicit rotations for the head and wrists only (`rig/leaves.py` derives each toe
-and bends it off the floor), and two sources have no toe channel to give (the 8-action files'
-toe rotations are 0 on every frame; DeepMimic's humanoid ends at the ankle).
+and bends it off the floor). Where a toe channel exists: Acclaim's ltoes/rtoes (HDM05,
+cmu-asfamc, cmu-bvh 16_01/02; in the 8-action files the toe bone's turn sits at the "lfoot"
+joint), Bandai's Toes_L/_R and iClone's ToeBase; the Daz files (cmu-bvh, salsa) end the leg
+at the foot and DeepMimic's humanoid at the ankle, so they have none.
 
 Rest correction C per leaf (the world orientation stored is the file's leaf frame times C):
 - Daz, Acclaim (HDM05, cmu-asfamc, cmu-bvh's Acclaim-named files, the 8-action exp-maps) and
