@@ -1,6 +1,8 @@
 """The one module with regular expressions: numbers, counts, sides, sentence structure, and the
 patterns compiled from the catalogue's own words (an action's word forms, a gesture's names).
-No phrase table lives here: what an action is called comes from `actions.toml`.
+No phrase table lives here: what an action is called comes from `actions.toml`, and the words
+inside a sentence pattern ("the two friends", "how does a person …", the months) are words.toml
+lists read by `listed`.
 
     words_rx(["sprint*", "as fast as"]).search("she dashes as fast as she can")
     names_source(["t pose"])        → matches "t pose", "t-pose", "tpose", "T-pose's"
@@ -96,6 +98,13 @@ def one_rx(nouns) -> re.Pattern:
     return rx(r"\b(?:a|an|one|single)\s+(?:(?!(?:few|couple|bit|little|lot|series|number|in|"
               r"on|at|with|your|his|her|their|the|of|to|for|and)\b)[a-z-]+\s+){0,2}?"
               rf"(?:{singular})\b")
+
+
+def listed(name: str, space: str = r"\s+") -> str:
+    """A words.toml list as a pattern's alternatives, in the list's order (a pattern tries them
+    first to last): each phrase's words escaped and joined by `space` (any spaces unless said)."""
+    from interplay.catalogue.words import lists
+    return "|".join(space.join(re.escape(w) for w in phrase.split()) for phrase in lists()[name])
 
 
 def words_of(text: str) -> list[str]:
@@ -200,8 +209,8 @@ def template_rx(templates) -> re.Pattern:
 CONTEXT_EVENT = re.compile(r"\s*\b(?:during|against|at|for|versus|vs\.?)\s+(?:the\s+)?(?:[A-Z][\w'’.-]*\s*)+"
                            r"(?:derby|game|match|final|cup|stadium|league|championship|tournament)?")
 CONTEXT_YEAR = re.compile(r"\s*\bin\s+(?:[A-Z][a-z]+\s+)?(?:\d{4})\b")
-CONTEXT_MONTH = re.compile(r"\s*\bin\s+(?:january|february|march|april|may|june|july|august|september|october|"
-                           r"november|december)(?:\s+\d{4})?\b", re.IGNORECASE)
+_MONTHS = listed("months")
+CONTEXT_MONTH = rx(rf"\s*\bin\s+(?:{_MONTHS})(?:\s+\d{{4}})?\b", re.IGNORECASE)
 CONTEXT_CELEBRATION = re.compile(r"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|their)\s+[\w\s'’-]{0,40}?celebration\b",
                                  re.IGNORECASE)
 
@@ -260,12 +269,10 @@ TO_VERB = re.compile(r"\s+to\s+(\w+)")                          # "stands up to 
 BEFORE_AFTER = re.compile(r"^(?:(?:before|prior\s+to)\s+(.+?),\s*(.+)$|after\s+(?!that\b)(.+?),\s*(.+)$"
                           r"|(.+?)\s+(?:before|prior\s+to)\s+(.+)$|(.+?)\s+after\s+(?!that\b|wards?\b)(.+)$)")
 BEFORE_AFTER_ORDER = ((1, 0), (0, 1), (0, 1), (1, 0))
-NOUN_ACT = re.compile(
-    r"\b(?:(do|does|did|doing|perform|performs|performed|performing|make|makes|made|making|throw|"
-    r"throws|threw|throwing|take|takes|took|taking|give|gives|gave|giving|execute|executes|"
-    r"executed|executing)\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
-    r"several|a\s+few)\s+)?((?:(?:full|quick|big|small|deep|little|high|low|single|double|"
-    r"perfect|powerful|fast|slow)\s+)*)([\w-]+)\b")
+_LIGHT_VERBS, _NOUN_ADJECTIVES = listed("noun_light_verbs"), listed("noun_adjectives")
+NOUN_ACT = rx(
+    rf"\b(?:({_LIGHT_VERBS})\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
+    rf"several|a\s+few)\s+)?((?:(?:{_NOUN_ADJECTIVES})\s+)*)([\w-]+)\b")
 FROM_TO = re.compile(
     r"(?:(?:picks?|picked|picking)\s+up\s+speed\s+|speeds?\s+up\s+|(?:goes|went|transitions?|"
     r"changes?|switch(?:es)?|moves?)\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?"
@@ -280,8 +287,9 @@ CLAUSE_OPENS = re.compile(r"(^|[,;.]\s*(?:(?:and|then)\s+)*|\b(?:(?:and|then|or|
 # --- two people's sentence structure (planner/pair/roles.py, actors.py) ---
 PAIR_NAMES = re.compile(r"^(?:a|an|the)?\s*(\w+) and (?:a|an|the)?\s*(\w+)$")       # "the man and the woman"
 WHO_ANSWERS = re.compile(r"^(?P<head>.+?),?\s+who\s+(?P<answer>.+)$")
-COPIES_THE_OTHER = re.compile(r"^(?:copies|mirrors|imitates|copy|mirror|imitate)\s+the\s+other(?:\s+person)?'?s?"
-                   r"\s+((?:\w+\s+)?)(?:movements?|moves|motions?|gestures?)(?P<rest>.*)$")
+_COPY_VERBS, _COPIED = listed("copy_verbs"), listed("copied_things")
+COPIES_THE_OTHER = rx(rf"^(?:{_COPY_VERBS})\s+the\s+other(?:\s+person)?'?s?"
+                      rf"\s+((?:\w+\s+)?)(?:{_COPIED})(?P<rest>.*)$")
 
 
 _OTHER_SUBJECT = r"the\s+other(?:\s+(?:one|person))?|the\s+second(?:\s+(?:one|person))?|the\s+follower"
@@ -336,18 +344,21 @@ HOLD_SIDE = re.compile(r"\b(left|right|both|each)\s+(?:\w+\s+)?(?:arms?|hands?|f
 
 
 # --- questions (planner/questions.py) ---
-QUESTION_STEM = re.compile(r"^\s*(?:what|how)\s+(?:is|are|does|do|would|might|could|will|should)\s+"
-                   r"(?:a|the|an|one)?\s*(?:person|man|woman|someone|people|player|you)?'?s?\s*"
-                   r"(?:motion|reaction|movement|move|gesture)?\s*(?:when|before|after|while|to|"
-                   r"like|do)?\s*", re.IGNORECASE)
+_Q_WORDS, _Q_VERBS, _Q_SUBJECTS = listed("question_words"), listed("question_verbs"), listed("question_subjects")
+_Q_MOTIONS, _Q_LINKS = listed("question_motions"), listed("question_links")
+QUESTION_STEM = rx(rf"^\s*(?:{_Q_WORDS})\s+(?:{_Q_VERBS})\s+"
+                   rf"(?:a|the|an|one)?\s*(?:{_Q_SUBJECTS})?'?s?\s*"
+                   rf"(?:{_Q_MOTIONS})?\s*(?:{_Q_LINKS})?\s*", re.IGNORECASE)
 
 
 # --- durations (planner/durations.py) ---
-DURATION_STEPS = re.compile(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
-                    r"seven|eight|nine|ten)\s+(?:steps?|strides?|paces?)\b")
+_STEP_UNITS = listed("step_units")
+DURATION_STEPS = rx(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|four|five|six|"
+                    rf"seven|eight|nine|ten)\s+(?:{_STEP_UNITS})\b")
 
 
 # --- two people's gestures (generators/interaction/gestures.py) ---
-GESTURE_WHO = re.compile(r"\b(?:two|the two|both|a pair of|a couple of)\s+(?:of\s+them\s+)?"
-                  r"(?:people|persons|friends|men|women|kids|children|dancers|athletes)?\b|"
-                  r"\bboth\s+of\s+them\b|\bthey\b|\bboth\b", re.I)
+
+_GROUP_OF_TWO, _GROUP_NOUNS = listed("group_of_two", " "), listed("group_nouns")
+GESTURE_WHO = rx(rf"\b(?:{_GROUP_OF_TWO})\s+(?:of\s+them\s+)?(?:{_GROUP_NOUNS})?\b|"
+                 r"\bboth\s+of\s+them\b|\bthey\b|\bboth\b", re.I)
