@@ -74,7 +74,8 @@ VAGUE = {"a few": 3, "several": 3, "a couple": 2, "a couple of": 2}
 _VAGUE = r"(?:a\s+few|several|a\s+couple(?:\s+of)?)"
 # A count said in words: "once", "twice", "three times", "one time"; one of something.
 ONE_SAID = re.compile(r"\b(?:one|a\s+single)\s+[a-z-]+", re.IGNORECASE)     # "one backflip"
-COUNT_SAID = re.compile(rf"\b(?:once|twice|thrice|{_NUMBER}\s+times?)\b", re.IGNORECASE)
+# (groups: the word said alone, the number, "time" or "times")
+COUNT_SAID = re.compile(rf"\b(?:(once|twice|thrice)|({_NUMBER})\s+(times?))\b", re.IGNORECASE)
 
 
 DEGREES = re.compile(r"(\d+(?:\.\d+)?)\s*(?:°|deg\b|degrees?\b)")      # "look up 40 degrees"
@@ -141,8 +142,9 @@ def back_rx(travel_forms) -> re.Pattern:
 
 
 # Held poses: the side of a leg stood on or lifted (words.toml's `one_leg` says it is held), a squat held.
-STANCE = re.compile(r"\bon (?:the |your |his |her |their )?(left|right) (?:leg|foot)\b")
-LIFTED = re.compile(r"\b(?:lift|rais)\w* (?:the |your |his |her |their )?(left|right)")
+# the side stood on (group 1: "on the left leg") or lifted (group 2: "raises the right")
+LEG_SIDE = re.compile(r"\bon (?:the |your |his |her |their )?(left|right) (?:leg|foot)\b"
+                      r"|\b(?:lift|rais)\w* (?:the |your |his |her |their )?(left|right)")
 HELD_AROUND = r"\b(?:hold\w*|stay\w*|remain\w*|keep\w*)\b[^.]*"       # "… holds it", "stays in …"
 
 
@@ -244,10 +246,10 @@ MODIFIER_LIMB = re.compile(r"^(?:(?:the|a|an|his|her|their)\s+)?(?:(left|right|b
 # the adjective (with its space) and the limb
 _LIMB = r"(arm|hand|fist|leg|knee|elbow|palm|shoulder|wrist|forearm|thumb)"
 _ADJS = r"((?:clenched|open|outstretched|bent|raised|straight|closed|extended)\s+)?"
-BOTH_LIMBS = re.compile(rf"\bboth\s+{_ADJS}{_LIMB}s?\b")
-BOTH_FEET = re.compile(rf"\bboth\s+{_ADJS}feet\b")
-LIMBS = re.compile(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right ){_LIMB}s\b")
-FEET = re.compile(rf"\b(?:the\s+)?{_ADJS}(?<!left )(?<!right )feet\b")
+# ... and limbs named without a side: "both (adj) arm(s)" (groups 1-3: adjective, limb, "feet")
+# or "(the) (adj) arms" (groups 4-6), one side written for each
+BOTH_OR_PLURAL = re.compile(rf"\bboth\s+{_ADJS}(?:{_LIMB}s?|(feet))\b"
+                            rf"|\b(?:the\s+)?{_ADJS}(?<!left )(?<!right )(?:{_LIMB}s|(feet))\b")
 AND_SIDE = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|right|both|other)\b)")
 
 
@@ -258,8 +260,6 @@ CONNECTIVE = re.compile(
     r"and\s+next|after\s+that|afterwards?|then|next(?!\s+to)|finally|lastly|subsequently|"
     r"followed\s+by|and\s+later|later\s+on|later|in\s+the\s+end|"
     r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
-TIMES_SAID = re.compile(r"\b(?:(one|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+times|"
-                    r"(once|twice|thrice))\b")
 AGAIN_STILL = re.compile(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+")     # said again: out
 AND_SPLIT = re.compile(r"\s+and\s+")
 TO_VERB = re.compile(r"\s+to\s+(\w+)")                          # "stands up to jump"

@@ -117,10 +117,11 @@ def for_side(text: str, part: str) -> str:
     """An instruction for both sides ("raises both clenched fists") written for one ("raises the
     clenched left fist")."""
     side = part.split("_")[0]
-    text = g.BOTH_LIMBS.sub(rf"the \1{side} \2", text)
-    text = g.BOTH_FEET.sub(rf"the \1{side} foot", text)
-    text = g.LIMBS.sub(rf"the \1{side} \2", text)
-    text = g.FEET.sub(rf"the \1{side} foot", text)
+
+    def one(m) -> str:
+        adj, limb, feet = m.group(1, 2, 3) if m.group(2) or m.group(3) else m.group(4, 5, 6)
+        return f"the {adj or ''}{side} {'foot' if feet else limb}"
+    text = g.BOTH_OR_PLURAL.sub(one, text)
     return listed("the_the").sub(text.replace(" sides", " side"), lambda found: "the")
 
 

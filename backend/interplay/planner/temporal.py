@@ -145,9 +145,9 @@ def _clean(piece: str) -> tuple[str, int]:
     if hit and hit[1] == "gerund" and hit[0].kind != "light":    # "before jumping" → "jumps"
         piece = third(hit[0].base) + piece[len(first):]
     piece, count = _noun_to_verb(piece)
-    m = g.TIMES_SAID.search(piece)
-    if m:
-        word = m.group(1) or m.group(2)
+    m = next((m for m in COUNT_SAID.finditer(piece) if (m.group(3) or "").lower() != "time"), None)
+    if m:                                       # "once", "twice", "three times" (not "one time")
+        word = (m.group(1) or m.group(2)).lower()
         count = int(word) if word.isdigit() else NUMBERS[word]
     elif count > 1:
         piece += " twice" if count == 2 else f" {count} times"

@@ -216,9 +216,10 @@ def hold_of(prompt: str) -> str | None:
     for long (retrieve_edit.holds lays them over a stand or a squat)."""
     t = prompt.lower()
     if any(words("one_leg").search(sentence) for sentence in t.split(".")) and not _words(_counted("jump") + _counted("kick")).search(t):
-        stance, lifted = g.STANCE.search(t), g.LIFTED.search(t)
-        side = (lifted.group(1) if lifted else
-                {"left": "right", "right": "left"}[stance.group(1)] if stance else "right")
+        said = list(g.LEG_SIDE.finditer(t))
+        stance = next((m.group(1) for m in said if m.group(1)), None)
+        lifted = next((m.group(2) for m in said if m.group(2)), None)
+        side = lifted or ({"left": "right", "right": "left"}[stance] if stance else "right")
         return f"one_leg:{side}"
     if g.held_rx(tuple(w for a in _counted("squat") for w in a.words)).search(t):
         return "squat"
