@@ -235,8 +235,8 @@ def one_action_rx(countable) -> re.Pattern:
 LIMB_PART = re.compile(r"\b(?:(left|right|both|each|either|other)\s+)?(arms?|hands?|fists?|elbows?|"
                    r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
                    r"toes?|heels?|ankles?|thighs?|shins?)\b")
-MODIFIER_MARK = re.compile(r"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:while|with|holding|having|keeping|"
-                   r"as\s+(?:he|she|they|if|though|the\s+person))\b)|"
+_MODIFIER_MARKS = listed("modifier_marks")
+MODIFIER_MARK = rx(rf"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:{_MODIFIER_MARKS})\b)|"
                    r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
 # "with the left hand", a modifier's own limb ("(the) left arm raised": side, limb, the rest)
 WITH_LIMB = re.compile(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + LIMB_PART.pattern[2:])
@@ -255,14 +255,9 @@ AND_SIDE = re.compile(r"\s+and\s+(?=(?:the\s+|his\s+|her\s+|their\s+)?(?:left|ri
 
 # --- temporal structure (planner/temporal.py): sentences, connectives, counts, noun phrases ---
 SENTENCE_END = re.compile(r"(?<=[.!?;])\s+|;\s*|(?<=[a-z])\.\s*$")
-CONNECTIVE = re.compile(
-    r"\s*,?\s*\b(?:and\s+then|and\s+afterwards?|and\s+after\s+that|and\s+finally|and\s+lastly|"
-    r"and\s+next|after\s+that|afterwards?|then|next(?!\s+to)|finally|lastly|subsequently|"
-    r"followed\s+by|and\s+later|later\s+on|later|in\s+the\s+end|"
-    r"(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
+_CONNECTIVES = listed("connectives")
+CONNECTIVE = rx(rf"\s*,?\s*\b(?:{_CONNECTIVES}|next(?!\s+to)|(?:second|third|fourth|fifth)(?:ly)?(?=\s*,))\b\s*,?\s*")
 AGAIN_STILL = re.compile(r"\s+again\b|,?\s*\bbut\s+(?:now|still|then)\b|\bstill\s+")     # said again: out
-AND_SPLIT = re.compile(r"\s+and\s+")
-TO_VERB = re.compile(r"\s+to\s+(\w+)")                          # "stands up to jump"
 # "before X, Y" / "after X, Y" / "X before Y" / "X after Y": one pattern, its alternatives tried
 # in this order; the k-th (from 1) fills groups 2k-1 and 2k (`m.lastindex` is 2k), the two parts
 # as written, and BEFORE_AFTER_ORDER[k-1] says which happens first
@@ -273,10 +268,8 @@ _LIGHT_VERBS, _NOUN_ADJECTIVES = listed("noun_light_verbs"), listed("noun_adject
 NOUN_ACT = rx(
     rf"\b(?:({_LIGHT_VERBS})\s+)?(?:(a|an|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|"
     rf"several|a\s+few)\s+)?((?:(?:{_NOUN_ADJECTIVES})\s+)*)([\w-]+)\b")
-FROM_TO = re.compile(
-    r"(?:(?:picks?|picked|picking)\s+up\s+speed\s+|speeds?\s+up\s+|(?:goes|went|transitions?|"
-    r"changes?|switch(?:es)?|moves?)\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?"
-    r"(\w+)\b")
+_CHANGE_VERBS = listed("change_verbs")
+FROM_TO = rx(rf"(?:(?:{_CHANGE_VERBS})\s+)?from\s+(?:a\s+|an\s+)?(\w+?)\s+(?:in)?to\s+(?:a\s+|an\s+)?(\w+)\b")
 ALTERNATE = re.compile(r"(?:,?\s*while\s+|,\s*)?alternat\w*\s+between\s+(.+?)\s+and\s+(.+?)"
                         r"(?:\s+(one|two|three|four|five|six|seven|eight|\d+)\s+times|\s+(twice))?"
                         r"\s*$")

@@ -183,7 +183,7 @@ def starts_action(text: str) -> bool:
 
 
 def _split_and(fragment: str) -> list[str]:
-    parts = g.AND_SPLIT.split(fragment)
+    parts = fragment.split(" and ")             # a normalised text: words one space apart
     out: list[str] = []
     for p in parts:
         if out and starts_action(p):
@@ -197,13 +197,19 @@ def _split_and(fragment: str) -> list[str]:
 
 def _split_to(text: str) -> list[str]:
     """"stands up to jump" → ["stands up", "jump"] when a whole-body verb follows "to"."""
-    m = g.TO_VERB.search(text)
-    if m:
-        hit = lookup(m.group(1))
-        head = text[:m.start()].split()
+    at, word = text.find(" to "), ""            # a normalised text: words one space apart
+    while at >= 0 and not word:
+        end = at + 4
+        while end < len(text) and (text[end].isalnum() or text[end] == "_"):
+            end += 1                            # the word after "to" (letters, digits, _)
+        word = text[at + 4:end]
+        at = at if word else text.find(" to ", at + 1)
+    if word:
+        hit = lookup(word)
+        head = text[:at].split()
         has_verb = any((h := lookup(w)) and h[0].kind != "light" for w in head)
         if hit and hit[0].kind in ("whole", "travel") and hit[1] != "gerund" and has_verb:
-            return [text[:m.start()], third(hit[0].base) + text[m.end():]]
+            return [text[:at], third(hit[0].base) + text[at + 4 + len(word):]]
     return [text]
 
 
