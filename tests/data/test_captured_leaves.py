@@ -12,7 +12,7 @@ import pytest
 from interplay.data import build
 from interplay.data.leaves import agreement
 from interplay.motion import skeleton as sk
-from interplay.motion.captured_leaves import LEAF_NAMES, captured_local, captured_world
+from interplay.motion.captured_leaves import HANDS, LEAF_NAMES, TOES, captured_local, captured_world
 from interplay.motion.clip import default_clips, load_clips
 from interplay.motion.kinematics import floor_height
 from interplay.motion.rig import global_rotations, rig_positions, solve_rig
@@ -36,13 +36,23 @@ HAND_MEDIAN = {"cmu-asfamc": 35.0, "cmu-iclone": 35.0}
 
 
 def _stacked(world: dict[str, np.ndarray]) -> np.ndarray:
-    """{leaf: (T, 4)} → (T, 3, 4), NaN for a leaf not carried (DeepMimic's hands)."""
+    """{leaf: (T, 4)} → (T, 5, 4), NaN for a leaf not carried (DeepMimic's hands, most toes)."""
     t = len(world["head"])
     return np.stack([world.get(leaf, np.full((t, 4), np.nan)) for leaf in LEAF_NAMES], axis=1)
 
 
+def _expected(clip) -> set[str]:
+    """The leaves a clip's source carries: DeepMimic the head alone, every other source the head
+    and hands, and the toes where the file rests as the rig does and has toe bones (Acclaim:
+    HDM05, cmu-asfamc, the 8-action files, cmu-bvh's two Acclaim-named files)."""
+    if clip.source == "deepmimic":
+        return {"head"}
+    toes = clip.source in ("hdm05", "cmu-asfamc", "cmu-8action") or clip.meta.get("skeleton") == "cmu-acclaim"
+    return {"head", *HANDS, *(TOES if toes else ())}
+
+
 def _hands(a: dict[str, float]) -> float:
-    return max([a[leaf] for leaf in LEAF_NAMES[1:] if leaf in a], default=0.0)
+    return max([a[leaf] for leaf in HANDS if leaf in a], default=0.0)
 
 
 @pytest.fixture(scope="module")
@@ -68,7 +78,7 @@ def test_the_build_writes_side_files_that_fit_its_clips(built):
                 n += 1
                 a = agreement(np.asarray(joints, np.float64), _stacked(world))
                 assert _hands(a) < 80.0, (clip.id, a)
-                assert set(world) == ({"head"} if clip.source == "deepmimic" else set(LEAF_NAMES))
+                assert set(world) == _expected(clip), clip.id
     assert n >= 8
     # A library built otherwise (other frames) gets no leaves rather than misplaced ones.
     clip = next(c for c in clips if captured_world(c.id, 0, data_dir=out))
@@ -91,6 +101,7 @@ def test_the_library_carries_every_person_of_the_carried_sources():
             world = captured_world(clip.id, k, len(joints))
             if world:
                 n += 1
+                assert set(world) == _expected(clip), clip.id
                 a = agreement(np.asarray(joints, np.float64), _stacked(world))
                 assert _hands(a) < 80.0, (clip.id, a)
                 medians.setdefault(clip.source, []).append(a)
@@ -98,7 +109,7 @@ def test_the_library_carries_every_person_of_the_carried_sources():
     assert set(medians) == SOURCES
     for source, rows in medians.items():
         assert np.median([r["head"] for r in rows]) < 20.0, source
-        for leaf in LEAF_NAMES[1:]:
+        for leaf in HANDS:
             if source != "deepmimic":
                 assert np.median([r[leaf] for r in rows]) < HAND_MEDIAN.get(source, 30.0), (source, leaf)
     from interplay.motion.retarget.deepmimic import Character, find_character
@@ -165,9 +176,9 @@ def test_a_retrieved_salsa_exports_the_dancers_own_heads_and_hands():
     leaves = plan_leaves(plan, 2, len(people[0]))
     for k in range(2):
         source = _source_local("salsa:09", k)
-        for leaf in LEAF_NAMES:
+        for leaf in ("head", *HANDS):                    # salsa's Daz legs end at the foot
             np.testing.assert_array_equal(leaves[k][leaf], source[leaf][263:323])
-    assert export_leaves(plan, 2, len(people[0]))[1].keys() == set(LEAF_NAMES)
+    assert export_leaves(plan, 2, len(people[0]))[1].keys() == {"head", *HANDS}
     floor = floor_height(people)
     given = read_bvh(write_bvh(people[1], floor=floor, leaves=leaves[1]))
     plain = read_bvh(write_bvh(people[1], floor=floor))
@@ -212,3 +223,45 @@ def test_views_and_joins():
     assert got == pytest.approx(w * ab, abs=0.01)
     jump = quat_steps(np.stack([base["head"][24], other["head"][10]]))[0]
     assert quat_steps(head[23:25 + FADE + 1]).max() < max(jump, 1.0)
+
+
+def test_carried_toes_lie_along_their_feet_and_reach_the_rig():
+    """The toes carried (Acclaim-resting sources): a planted toe points along its foot, level
+    (per source the median person's tip within 8° of horizontal and 8° of the foot's heading;
+    measured -6–3° and 0.5–3.4°); the rig exports the capture's toe where the floor does not
+    bend it, not the derived one (the identity on the ankle)."""
+    from interplay.motion.rotations import quat_to_matrix as q2m
+    rows: dict[str, list[tuple[float, float]]] = {}
+    for clip in default_clips():
+        if clip.source == "composed":
+            continue
+        joints = np.asarray(clip.people[0], np.float64)
+        world = captured_world(clip.id, 0, len(joints))
+        if "left_foot" not in world:
+            continue
+        floor = floor_height([joints])
+        for toe, ankle in zip(TOES, ("left_ankle", "right_ankle")):
+            planted = joints[:, J[toe], 1] - floor < 0.04
+            if planted.sum() < 3:
+                continue
+            tip = q2m(world[toe][planted])[:, :, 2]
+            foot = (joints[planted, J[toe]] - joints[planted, J[ankle]]) * [1.0, 0.0, 1.0]
+            flat = tip * [1.0, 0.0, 1.0]
+            cos = np.sum(foot * flat, -1) / (np.linalg.norm(foot, axis=-1) * np.linalg.norm(flat, axis=-1))
+            rows.setdefault(clip.source, []).append(
+                (float(np.median(np.degrees(np.arcsin(np.clip(tip[:, 1], -1, 1))))),
+                 float(np.median(np.degrees(np.arccos(np.clip(cos, -1, 1)))))))
+    assert set(rows) == {"hdm05", "cmu-asfamc", "cmu-8action", "cmu-bvh"}
+    for source, got in rows.items():
+        level, heading = np.median(np.asarray(got), axis=0)
+        assert abs(level) < 8.0 and heading < 8.0, (source, level, heading)
+    clip = next(c for c in default_clips() if c.source == "hdm05" and "kick" in c.id)
+    joints = np.asarray(clip.people[0], np.float64)
+    floor = floor_height([joints])
+    local = captured_local(joints, captured_world(clip.id, 0, len(joints)), floor=floor)
+    rig = solve_rig(joints, floor=floor, leaves=local)
+    high = joints[:, J["left_foot"], 1] - floor > 0.15                 # a kicking foot, off the floor
+    assert high.sum() >= 5
+    np.testing.assert_allclose(np.abs(np.sum(rig.rotations[high, J["left_foot"]] * local["left_foot"][high], -1)),
+                               1.0, atol=1e-9)
+    assert not np.allclose(np.abs(rig.rotations[high, J["left_foot"], 0]), 1.0, atol=1e-3)

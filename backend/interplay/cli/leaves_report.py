@@ -18,7 +18,7 @@ import numpy as np
 
 from interplay.motion.rig.steps import STEP
 
-LEAVES = ("head", "left_wrist", "right_wrist")
+LEAVES = ("head", "left_wrist", "right_wrist", "left_foot", "right_foot")
 # One-person prompts over what retrieve-then-edit does: plain captures, arm actions (a wave, a
 # raised arm), primitives (a nod, a shake, jumping jacks, claps), holds, a slowed walk.
 PROMPTS = (

@@ -6,8 +6,9 @@ fixture and evaluation number depends on them, so the orientations go into their
 source (the same licence as the source's positions), keyed by clip id and person, and frames
 that match the library's clip frame for frame. The file holds
 
-    quats  (M, 3, 4) float16   world orientations (w, x, y, z) of the head, left and right
-                               hand, in the library's canonical frame (the clip's own yaw
+    quats  (M, 5, 4) float16   world orientations (w, x, y, z) of the head, left and right
+                               hand, left and right toe (LEAF_NAMES; NaN: not carried),
+                               in the library's canonical frame (the clip's own yaw
                                applied, Y up), every person-frame of the source's carried
                                clips concatenated; the rest frame is the rig's (`motion/rig`):
                                identity = a T-pose facing +Z, the hand along the forearm
@@ -20,18 +21,20 @@ Acclaim-named files), cmu-salsa (both dancers), bandai-namco (593), hdm05 (287),
 are fixed joints, so no file turns a hand; a leaf not carried is stored as NaN). Each
 format's bones are read by `leaves_read.py`, which replays the positions' own pipeline on
 the rotations (the converter's lead-in or T-pose cut, the capture rate's resampling to 20 fps
-by slerp at the very times the positions take, the canonical yaw). Toes are not carried yet:
-the rig takes explicit rotations for the head and wrists only (`rig/leaves.py` derives each toe
-and bends it off the floor). Where a toe channel exists: Acclaim's ltoes/rtoes (HDM05,
-cmu-asfamc, cmu-bvh 16_01/02; in the 8-action files the toe bone's turn sits at the "lfoot"
-joint), Bandai's Toes_L/_R and iClone's ToeBase; the Daz files (cmu-bvh, salsa) end the leg
-at the foot and DeepMimic's humanoid at the ankle, so they have none.
+by slerp at the very times the positions take, the canonical yaw). Toes (the rig's "left_foot" / "right_foot", the ball of the foot; `rig/leaves.py` keeps them off
+the floor on top) are carried where the file rests as the rig does and has a toe bone: Acclaim's
+ltoes / rtoes (HDM05, cmu-asfamc, cmu-bvh 16_01/02; in the 8-action files the toe bone's turn
+sits at the "lfoot" joint): 331 people. Not carried: the Daz files (cmu-bvh, salsa) end the leg
+at the foot and DeepMimic's humanoid at the ankle; Bandai's Toes_L/_R and iClone's ToeBase
+exist, but a correction measured on their feet leaves planted toes 21–25° off the foot's
+heading, so they are left to the rig (`leaves_read.TOE_BONES`).
 
 Rest correction C per leaf (the world orientation stored is the file's leaf frame times C):
 - Daz, Acclaim (HDM05, cmu-asfamc, cmu-bvh's Acclaim-named files, the 8-action exp-maps) and
   DeepMimic rest as the rig does, or as it does turned (DeepMimic faces +X: C is +90° about
   Y): the head needs none, each hand the turn from the rig's rest hand (along the template's
-  rest forearm) onto the file's, exact, per person.
+  rest forearm) onto the file's, each toe from the rig's (pointing ahead) onto the file's toe
+  bone, exact, per person.
 - Bandai Namco's rest figure lies along +X and iClone's CC_Base bones have axes of their own,
   so C is measured per source,
   as the SVD projection of a mean rotation: a hand's from the file's forearm frame to the
@@ -80,10 +83,10 @@ def rest_corrections(samples: list[tuple[dict[str, np.ndarray], np.ndarray]]) ->
     so the face looks level and ahead of the body on average."""
     from interplay.motion.kinematics import facing_angle
     from interplay.motion.rig import global_rotations, solve_rig
-    sums = {leaf: np.zeros((3, 3)) for leaf in LEAF_NAMES}
+    sums = {leaf: np.zeros((3, 3)) for leaf in LEAF_NAMES if leaf in samples[0][0]}
     for globs, joints in samples:
         rig = global_rotations(solve_rig(joints))
-        for leaf in LEAF_NAMES:
+        for leaf in sums:
             if leaf == "head":
                 sums[leaf] += np.einsum("tji,tjk->ik", globs[leaf][:, 0], yaw_matrix(facing_angle(joints)))
             else:
@@ -126,7 +129,7 @@ def _carry(clip: Clip, src: Path) -> list[dict[str, np.ndarray] | None]:
 
 
 def agreement(joints: np.ndarray, q: np.ndarray) -> dict[str, float]:
-    """Median angles (deg) between carried leaves q (T, 3, 4) and the library's own joints
+    """Median angles (deg) between carried leaves q (T, 5, 4) and the library's own joints
     (T, 22, 3): the head's face (its forward axis) against the body's facing, both on the
     floor (a head turns on its body, but a wrong yaw or axis shows at once); each hand's
     direction (its orientation applied to the rest forearm) against the forearm itself (they
@@ -137,8 +140,8 @@ def agreement(joints: np.ndarray, q: np.ndarray) -> dict[str, float]:
     body = facing_direction(joints) * [1.0, 0.0, 1.0]
     cos = np.sum(face * body, -1) / np.maximum(np.linalg.norm(face, axis=-1) * np.linalg.norm(body, axis=-1), 1e-9)
     out = {"head": float(np.median(np.degrees(np.arccos(np.clip(cos, -1, 1)))))}
-    for i, leaf in enumerate(LEAF_NAMES[1:], start=1):
-        if not np.isfinite(q[:, i].astype(np.float64)).all():          # not carried (DeepMimic's hands)
+    for i, leaf in enumerate(LEAF_NAMES[1:3], start=1):           # the hands (not the toes)
+        if not np.isfinite(q[:, i].astype(np.float64)).all():    # not carried (DeepMimic's)
             continue
         along = sk.REST_OFFSETS[J[leaf]]
         d = m[:, i] @ (along / np.linalg.norm(along))
@@ -181,8 +184,9 @@ def build_leaves(source: str, src: Path, out: Path) -> dict:
     np.savez_compressed(leaves_file(source, out), quats=np.concatenate(quats),
                         index=np.array(json.dumps(index)))
     turn = {leaf: round(float(np.degrees(np.arccos(np.clip((np.trace(c) - 1) / 2, -1, 1)))), 1)
-            for leaf, c in fix.items()}
-    return {"source": source, "people": len(index), "clips": len({row["id"] for row in index}),
+            for leaf, c in fix.items() if np.isfinite(c).all()}
+    toes = sum(int(np.isfinite(q[:, 3:].astype(np.float64)).all(axis=(1, 2)).any()) for q in quats)
+    return {"source": source, "people": len(index), "toes": toes, "clips": len({row["id"] for row in index}),
             "frames": start, "rest_correction_deg": turn,
             "agreement_deg": {leaf: round(float(np.median([a[leaf] for a in agree if leaf in a])), 1)
                               for leaf in LEAF_NAMES if any(leaf in a for a in agree)}}
@@ -205,7 +209,7 @@ def main(argv: list[str] | None = None) -> int:
     for source in args.only or CARRIED:
         t0 = time.time()
         summary = build_leaves(source, args.source, args.out)
-        print(f"{source:12s} {summary['people']:3d} people {summary['frames']:6d} frames "
+        print(f"{source:12s} {summary['people']:3d} people ({summary['toes']} with toes) {summary['frames']:6d} frames "
               f"{time.time() - t0:5.1f} s; rest correction (deg) {summary['rest_correction_deg']}; "
               f"median angle to the library's bones (deg) {summary['agreement_deg']}", flush=True)
     return 0

@@ -3,22 +3,29 @@
 capture rate's resampling to 20 fps by slerp at the very times the positions take, the clip's
 canonical yaw), so that frame i is the library clip's frame i.
 
-Each reader gives, per leaf, (T, 2, 3, 3): the leaf bone's world rotation and its parent bone's
-(column vectors, Y up), and "rest" (3, 3, 3) where the family rests as the rig does (a T-pose
-facing +Z, left at +X): the exact correction per leaf (identity for the head; each hand the
-turn from the rig's rest hand, along its rest forearm, onto the file's rest hand bone). Without
-"rest" the correction is measured (`leaves.rest_corrections`).
+Each reader gives, per leaf it carries, (T, 2, 3, 3): the leaf bone's world rotation and its
+parent bone's (column vectors, Y up), and "rest" (5, 3, 3) (LEAF_NAMES' order, NaN for a leaf
+not carried) where the family rests as the rig does (a T-pose facing +Z, left at +X): the exact
+correction per leaf (identity for the head; each hand the turn from the rig's rest hand, along
+its rest forearm, onto the file's rest hand bone; each toe from the rig's, pointing +Z, onto
+the file's toe bone). Without "rest" the correction is measured (`leaves.rest_corrections`).
 
 Families and their leaf bones (bone, parent bone):
-- Daz BVH (cmu-bvh, salsa): head on neck, l/rHand on l/rForeArm; exact rest.
+- Daz BVH (cmu-bvh, salsa): head on neck, l/rHand on l/rForeArm; no toe (the leg ends at the
+  foot); exact rest.
 - Acclaim-named BVH (cmu-bvh 16_01, 16_02; a joint sits at the start of its Acclaim bone):
-  head on upperneck, l/rhand on l/rradius; exact rest (a T-pose, the hand bone along +X).
-- Bandai Namco BVH: Head on Neck, Hand_L/_R on LowerArm_L/_R; measured (rests along +X).
-- CC_Base BVH (cmu-iclone): CC_Base_Head on NeckTwist02, L/R_Hand on L/R_Forearm; measured.
-- Acclaim ASF/AMC (HDM05, cmu-asfamc): head on upperneck, l/rhand on l/rradius; exact.
+  head on upperneck, l/rhand on l/rradius, l/rtoes on l/rfoot; exact rest (a T-pose, the hand
+  bone along +X, each toe towards its End Site).
+- Bandai Namco BVH: Head on Neck, Hand_L/_R on LowerArm_L/_R; measured (rests along +X);
+  its toes not carried (TOE_BONES).
+- CC_Base BVH (cmu-iclone): CC_Base_Head on NeckTwist02, L/R_Hand on L/R_Forearm; measured;
+  its toes not carried (TOE_BONES).
+- Acclaim ASF/AMC (HDM05, cmu-asfamc): head on upperneck, l/rhand on l/rradius, l/rtoes on
+  l/rfoot; exact.
 - The 8-action exp-maps (`retarget/cmu_8action`, Acclaim's bones, row vectors): a bone is
   turned by its start joint's global, the head by upperneck's, a hand by l/rwrist's (on
-  l/rwrist_start's, the forearm with its twist); exact rest (Acclaim's).
+  l/rwrist_start's, the forearm with its twist), a toe by l/rfoot's (on l/rtibia's); exact
+  rest (Acclaim's).
 - DeepMimic's humanoid: the head is the neck joint's body (on the chest); its wrists are
   "fixed" joints (no rotation in any file: the hand is the forearm), so no hands are carried.
   Exact rest: the character faces +X with its right at +Z, the rig's rest turned by +90°
@@ -33,11 +40,11 @@ from pathlib import Path
 import numpy as np
 
 from interplay.motion import skeleton as sk
+from interplay.motion.captured_leaves import LEAF_NAMES
 from interplay.motion.kinematics import forward_kinematics
 from interplay.motion.rotations import matrix_to_quat, quat_to_matrix, rotation_between, yaw_matrix
 
 J = sk.JOINT_INDEX
-HANDS = ("left_wrist", "right_wrist")
 # Per BVH family, each leaf's bone and its parent bone's (the rig's parent joint's match).
 BONES: dict[str, dict[str, tuple[str, str]]] = {
     "daz": {"head": ("head", "neck"), "left_wrist": ("lHand", "lForeArm"),
@@ -50,16 +57,43 @@ BONES: dict[str, dict[str, tuple[str, str]]] = {
                 "left_wrist": ("CC_Base_L_Hand", "CC_Base_L_Forearm"),
                 "right_wrist": ("CC_Base_R_Hand", "CC_Base_R_Forearm")},
 }
-# Per exactly resting BVH family, each hand bone's rest direction: (from joint, to joint).
-REST_HANDS: dict[str, dict[str, tuple[str, str]]] = {
+# Per BVH family whose toes are carried, each toe's bone and its parent's (the foot). Only the
+# exactly resting families: Bandai's Toes_L/_R and iClone's ToeBase exist, but a correction
+# measured on the foot's frame leaves their planted toes 21–25° off the foot's heading (iClone's
+# also 29° up; the toe bone does not continue its foot at rest), so they are not carried.
+TOE_BONES: dict[str, dict[str, tuple[str, str]]] = {
+    "acclaim": {"left_foot": ("ltoes", "lfoot"), "right_foot": ("rtoes", "rfoot")},
+}
+# Per exactly resting BVH family, each hand or toe bone's rest direction: (from, to) positions.
+REST_DIRECTIONS: dict[str, dict[str, tuple[str, str]]] = {
     "daz": {"left_wrist": ("lHand", "lMid1"), "right_wrist": ("rHand", "rMid1")},
-    "acclaim": {"left_wrist": ("lhand", "lfingers"), "right_wrist": ("rhand", "rfingers")},
+    "acclaim": {"left_wrist": ("lhand", "lfingers"), "right_wrist": ("rhand", "rfingers"),
+                "left_foot": ("ltoes", "ltoes_end"), "right_foot": ("rtoes", "rtoes_end")},
 }
 ACCLAIM_BONES: dict[str, tuple[str, str]] = {
-    "head": ("head", "upperneck"), "left_wrist": ("lhand", "lradius"), "right_wrist": ("rhand", "rradius")}
+    "head": ("head", "upperneck"), "left_wrist": ("lhand", "lradius"), "right_wrist": ("rhand", "rradius"),
+    "left_foot": ("ltoes", "lfoot"), "right_foot": ("rtoes", "rfoot")}
 EXPMAP_BONES: dict[str, tuple[str, str]] = {
     "head": ("upperneck", "lowerneck"), "left_wrist": ("lwrist", "lwrist_start"),
-    "right_wrist": ("rwrist", "rwrist_start")}
+    "right_wrist": ("rwrist", "rwrist_start"), "left_foot": ("lfoot", "ltibia"),
+    "right_foot": ("rfoot", "rtibia")}
+TOE_TIP = np.array([0.0, 0.0, 1.0])      # the rig's rest toe points ahead (`rig.end_sites`)
+
+
+def _rig_rest(leaf: str) -> np.ndarray:
+    """The direction a leaf's bone points at the rig's rest: a hand along its forearm, a toe ahead."""
+    return TOE_TIP if leaf.endswith("_foot") else sk.REST_OFFSETS[J[leaf]]
+
+
+def _rests(directions: dict[str, np.ndarray]) -> np.ndarray:
+    """Exact corrections (5, 3, 3) in LEAF_NAMES' order: the head none, each hand or toe given
+    a direction the turn from the rig's rest onto it, NaN for a leaf not carried."""
+    out = np.full((len(LEAF_NAMES), 3, 3), np.nan)
+    out[0] = np.eye(3)
+    for i, leaf in enumerate(LEAF_NAMES):
+        if leaf in directions:
+            out[i] = rotation_between(_rig_rest(leaf), directions[leaf])
+    return out
 
 
 def _slerp_at(q: np.ndarray, pos: np.ndarray) -> np.ndarray:
@@ -95,13 +129,6 @@ def _out(glob: dict[str, np.ndarray], bones: dict[str, tuple[str, str]], yaw: fl
     return out
 
 
-def _hand_rests(rest: dict[str, np.ndarray], pairs: dict[str, tuple[str, str]]) -> np.ndarray:
-    """The exact corrections (3, 3, 3): the head none, each hand the turn from the rig's rest
-    hand onto the file's rest hand bone (from → to joint positions in `rest`)."""
-    return np.stack([np.eye(3)] + [rotation_between(sk.REST_OFFSETS[J[leaf]], rest[b][0] - rest[a][0])
-                                   for leaf, (a, b) in pairs.items()])
-
-
 def bvh_globals(path: Path, cut: int, fps: float, yaw: float) -> dict[str, np.ndarray] | None:
     """A BVH of one of the BONES families (Y up after FK), replayed through the positions'
     pipeline (lead-in `cut`, capture rate `fps` → 20, canonical `yaw`); None for another."""
@@ -112,13 +139,16 @@ def bvh_globals(path: Path, cut: int, fps: float, yaw: float) -> dict[str, np.nd
                    if all(b in bvh.names for pair in bones.values() for b in pair)), None)
     if family is None:
         return None
+    bones = {**BONES[family], **{leaf: pair for leaf, pair in TOE_BONES.get(family, {}).items()
+                                 if all(b in bvh.names for b in pair)}}
     rot, _ = bvh.local_transforms()
     _, g = forward_kinematics(rot[cut:], np.zeros((len(rot) - cut, 3)), bvh.offsets, list(bvh.parents))
-    glob = {b: g[:, bvh.index(b)] for pair in BONES[family].values() for b in pair}
-    out = _out(glob, BONES[family], yaw, lambda q: _slerp_resample(q, fps))
-    if family in REST_HANDS:                    # rests as the rig: exact corrections
+    glob = {b: g[:, bvh.index(b)] for pair in bones.values() for b in pair}
+    out = _out(glob, bones, yaw, lambda q: _slerp_resample(q, fps))
+    if family in REST_DIRECTIONS:               # rests as the rig: exact corrections
         rest = replace(bvh, motion=np.zeros((1, bvh.motion.shape[1]))).named_positions(include_end_sites=True)
-        out["rest"] = _hand_rests(rest, REST_HANDS[family])
+        out["rest"] = _rests({leaf: rest[b][0] - rest[a][0] for leaf, (a, b) in REST_DIRECTIONS[family].items()
+                              if leaf in bones and a in rest and b in rest})
     return out
 
 
@@ -140,9 +170,8 @@ def acclaim_globals(amc_path: Path, asf_path: Path, fps: float, yaw: float) -> d
         c = ordered_rotation(bone.axis, bone.axis_order)
         glob[name] = glob[asf.parents[name]] @ (c @ _bone_motion(bone, amc.values.get(name), t, to_rad) @ c.T)
     out = _out(glob, ACCLAIM_BONES, yaw, lambda q: _slerp_resample(q, fps))
-    out["rest"] = np.stack([np.eye(3)] + [
-        rotation_between(sk.REST_OFFSETS[J[leaf]], asf.bones[ACCLAIM_BONES[leaf][0]].direction)
-        for leaf in HANDS])
+    out["rest"] = _rests({leaf: asf.bones[bone].direction for leaf, (bone, _) in ACCLAIM_BONES.items()
+                          if leaf != "head"})
     return out
 
 
@@ -162,8 +191,10 @@ def expmap_globals(path: Path, yaw: float) -> dict[str, np.ndarray]:
     names = {name: i for i, name in enumerate(ea.JOINT_NAMES)}
     glob = {b: np.swapaxes(g[:, names[b]], -1, -2) for pair in EXPMAP_BONES.values() for b in pair}
     out = _out(glob, EXPMAP_BONES, yaw, lambda q: _slerp_resample(q, ea.FPS_8ACTION))
-    out["rest"] = np.stack([np.eye(3)] + [rotation_between(sk.REST_OFFSETS[J[leaf]], skel.offsets[names[hand]])
-                                          for leaf, hand in zip(HANDS, ("lhand", "rhand"))])
+    # each bone's rest direction: the offset of the joint it ends at
+    out["rest"] = _rests({leaf: skel.offsets[names[end]] for leaf, end in
+                          (("left_wrist", "lhand"), ("right_wrist", "rhand"), ("left_foot", "ltoes"),
+                           ("right_foot", "rtoes"))})
     return out
 
 
@@ -197,5 +228,6 @@ def deepmimic_globals(path: Path, fps: float, yaw: float) -> dict[str, np.ndarra
     names = {n: i for i, n in enumerate(char.names)}
     out = _out({b: glob[names[b]] for b in ("neck", "chest")}, {"head": ("neck", "chest")}, yaw,
                lambda q: _slerp_at(q, pos))
-    out["rest"] = yaw_matrix(np.pi / 2)[None]
+    out["rest"] = np.full((len(LEAF_NAMES), 3, 3), np.nan)
+    out["rest"][0] = yaw_matrix(np.pi / 2)
     return out

@@ -1,4 +1,4 @@
-"""The captures' own head and hand orientations, where the library carries them: side files
+"""The captures' own head, hand and toe orientations, where the library carries them: side files
 models/data/leaves/<source>.npz written by `interplay data leaves` (`data/leaves.py`, which
 says what each holds), next to the positions they belong to, never inside them.
 
@@ -7,7 +7,7 @@ says what each holds), next to the positions they belong to, never inside them.
 
 `captured_local` turns world orientations into the rig's leaf rotations: each relative to its
 parent bone as `rig.solve_rig` solves it for these joints (the head on the neck, a hand on its
-forearm), so the exported hand or head turns the way the capture's did, whatever twist the
+forearm, a toe on its ankle), so the exported hand or head turns the way the capture's did, whatever twist the
 solver gave the parent. numpy only; reads models/data only.
 """
 
@@ -22,7 +22,9 @@ import numpy as np
 from interplay.motion import skeleton as sk
 from interplay.motion.clip import DATA_DIR
 
-LEAF_NAMES: tuple[str, ...] = ("head", "left_wrist", "right_wrist")
+LEAF_NAMES: tuple[str, ...] = ("head", "left_wrist", "right_wrist", "left_foot", "right_foot")
+HANDS: tuple[str, ...] = ("left_wrist", "right_wrist")
+TOES: tuple[str, ...] = ("left_foot", "right_foot")       # the rig's toe joints (SMPL's "foot")
 
 
 def leaves_file(source: str, data_dir: Path | str = DATA_DIR) -> Path:
@@ -37,6 +39,9 @@ def _load(data_dir: str) -> dict[tuple[str, int], np.ndarray]:
     for path in sorted((Path(data_dir) / "leaves").glob("*.npz")):
         with np.load(path) as f:
             quats = f["quats"].astype(np.float32)
+            if quats.shape[1] < len(LEAF_NAMES):               # a file from before the toes
+                pad = np.full((len(quats), len(LEAF_NAMES) - quats.shape[1], 4), np.nan, np.float32)
+                quats = np.concatenate([quats, pad], axis=1)
             index = json.loads(str(f["index"]))
         for row in index:
             out[row["id"], int(row["person"])] = quats[row["start"]:row["start"] + row["frames"]]
@@ -79,7 +84,8 @@ def captured_local(joints: np.ndarray, world: dict[str, np.ndarray], *, fps: flo
 # continuation (`generators/retrieval/stitch.FADE`; a test keeps the two equal): the leaves
 # are cross-faded over the same frames with the same smoothstep weights, by slerp.
 FADE = 10
-_MIRROR_SWAP = {"head": "head", "left_wrist": "right_wrist", "right_wrist": "left_wrist"}
+_MIRROR_SWAP = {"head": "head", "left_wrist": "right_wrist", "right_wrist": "left_wrist",
+                "left_foot": "right_foot", "right_foot": "left_foot"}
 
 
 @lru_cache(maxsize=64)

@@ -38,17 +38,17 @@ def captured(plan: dict | None, persons: int, frames: int) -> Leaves:
 
 
 def _touched(entry: dict) -> tuple[str, ...]:
-    """The leaves an edit entry re-made: an IK arm pose its arms' wrists, a kick none (a leg),
+    """The leaves an edit entry re-made: an IK arm pose its arms' wrists, a kick its leg's toe,
     a head edit the head, SPAM's parts the leaves inside them (`skeleton.PART_JOINTS`: an upper
-    part holds the head and its hand), a path none (the whole body moved rigidly), anything
-    else (a re-run segment, an unknown entry) every leaf."""
+    part holds the head and its hand, a lower one its toe), a path none (the whole body moved
+    rigidly), anything else (a re-run segment, an unknown entry) every leaf."""
     if "trajectory" in entry:
         return ()
     kind = entry.get("generator")
     if kind == "ik_pose":
         return tuple(f"{a.split('_')[0]}_wrist" for a in entry.get("arms") or [])
-    if kind == "captured_kick":
-        return ()
+    if kind == "captured_kick":                   # the kicking leg's toe
+        return tuple(f"{leg.split('_')[0]}_foot" for leg in [entry.get("leg") or ""] if leg)
     if kind == "primitive" or entry.get("part") == "head":
         return ("head",)
     parts = [sk.PART_ALIASES.get(p, p) for p in entry.get("parts") or []]

@@ -11,8 +11,9 @@ is replayed on the leaves, not on the joints):
 - the slowed last segment (`pace`): its leaves played at the same rate (slerp), the rate
   measured as `pace.rate_of` measures it, on the segment's pieces as the stitcher plays them;
 - an arm action (`arm_poses`: a pose held, a wave): that arm's wrist derived wherever the IK
-  weighs in (a wave's hand trails its forearm); the head and the other hand stay captured;
-- high knees: the legs only, every leaf kept.
+  weighs in (a wave's hand trails its forearm); the head, the other hand and the toes stay
+  captured;
+- high knees: the lifted legs' toes derived, every other leaf kept.
 
 Derived frames are rows of NaN; the rig turns its derived leaves into the captured ones over
 LEAF_BLEND frames at each end (`rig.leaves._given`), so an edit's ends blend. Shapes: leaves
@@ -26,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from interplay.generators.plan import GenerationPlan
+from interplay.generators.retrieve_edit.actions import knee_lifts
 from interplay.generators.retrieve_edit.arm_poses import weights
 from interplay.generators.retrieve_edit.generator import NAME, _actions, _slowed
 from interplay.generators.retrieve_edit.holds import hold_of
@@ -113,6 +115,10 @@ def retrieve_edit_leaves(plan: dict | None, persons: int, frames: int) -> list[d
         rate = rate_of(joints) if joints is not None else 1.0
         for q in first.values():
             q[slow.start:slow.end] = resample_leaves(q[slow.start:slow.end], rate, slow.end - slow.start)
+    for seg in gp.segments:              # high knees: the lifted legs' toes (`leg_lifts`)
+        legs, _ = knee_lifts(seg)
+        if legs and not (seg.retrieval is not None and seg.retrieval.mode == "pair"):
+            _derive(first, [f"{side}_foot" for side in legs], seg.start, seg.end)
     for act in _actions(gp)[0]:
         w = weights(frames, max(0, act.start), min(frames, act.end))
         on = np.flatnonzero(w > 0)

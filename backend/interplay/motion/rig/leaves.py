@@ -33,6 +33,9 @@ from interplay.motion.rotations import (
 J = sk.JOINT_INDEX
 # The leaves (joints with no child): their rotations are not in the joints (see above).
 LEAVES: tuple[str, ...] = ("head", "left_wrist", "right_wrist")
+# Toes may be given too (a capture's own, `motion/captured_leaves.py`), then kept off the floor
+# as derived ones are; the Motion JSON's "leaves" holds LEAVES only.
+GIVEN: tuple[str, ...] = LEAVES + ("left_foot", "right_foot")
 HEAD_SHARE = 0.5                 # the head's turn on the neck, as a share of the neck's
 HAND_LAG = 0.08                  # s: the hand follows its forearm's direction with this lag
 # The lag bends the wrist at most this much. 30°, not more: a forearm reversing its swing
@@ -159,8 +162,8 @@ def fill_leaves(joints: np.ndarray, offsets: np.ndarray, local: np.ndarray, glob
         g_el = glob[:, sk.PARENTS[wrist]]
         local[:, wrist] = np.swapaxes(g_el, -1, -2) @ _hand_lag(joints, wrist, fps) @ g_el
     for name, q in given.items():
-        if name not in LEAVES:
-            raise ValueError(f"explicit rotations are for {', '.join(LEAVES)}, got {name!r}")
+        if name not in GIVEN:
+            raise ValueError(f"explicit rotations are for {', '.join(GIVEN)}, got {name!r}")
         q = np.asarray(q, dtype=np.float64)
         known = np.all(np.isfinite(q), axis=-1) if q.ndim == 2 else np.zeros(0, bool)
         if q.shape != (len(joints), 4) or not np.all(known | np.all(np.isnan(q), axis=-1)):

@@ -165,7 +165,8 @@ def solve_rig(joints: np.ndarray, offsets: np.ndarray | None = None, *, fps: flo
     floor: the ground's height (y, m) the toe tips keep above; the person's own
     (`kinematics.floor_height`) when None; pass the shared one for two people. fps: the
     motion's rate (the hands' lag is in seconds). leaves: explicit local rotations (T, 4),
-    w x y z, of "head", "left_wrist" or "right_wrist" (an edit's, a capture's), in place of the
+    w x y z, of "head", "left_wrist", "right_wrist" (an edit's, a capture's) or the toes
+    "left_foot", "right_foot" (a capture's, still kept off the floor), in place of the
     derived; rows of NaN keep the derived on those frames (blended into the given ones)."""
     joints = np.asarray(joints, dtype=np.float64)
     if joints.ndim != 3 or joints.shape[1:] != (sk.NUM_JOINTS, 3) or joints.shape[0] < 1:
