@@ -12,7 +12,7 @@ from interplay.eval.prompts.vocabulary import docstrings
 PACKAGE = Path(__file__).resolve().parents[2] / "backend" / "interplay"
 GRAMMAR = "catalogue/grammar.py"
 # re.compile calls in grammar.py: the ceiling reached so far (issue 23 asks for 25); it may only go down
-GRAMMAR_COMPILES = 27
+GRAMMAR_COMPILES = 25
 # calls like re.search("…", text) outside grammar.py: none
 INLINE_CALLS = 0
 LEGACY_TABLES: dict[str, int] = {}       # modules whose phrase tables are still patterns: none

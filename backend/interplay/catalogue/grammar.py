@@ -219,7 +219,6 @@ CONTEXT_CELEBRATION = re.compile(r"\s*\b(?:in|as|for)\s+(?:a|an|the|his|her|thei
 
 # --- the planner's sentence structure (planner/plan.py) ---
 WHILE_THE_OTHER = re.compile(r",?\s+while\s+the\s+other(?:\s+(?:one|person))?\s+(.+)$")
-CLOCK_TURN = re.compile(r"^(?:(?:he|she|they|it)\s+)?turns?\b.*\bo'?\s*clock\b")
 
 
 
@@ -232,14 +231,15 @@ def one_action_rx(countable) -> re.Pattern:
 
 
 # --- the decomposer's sentence structure (planner/decompose.py): limbs, modifiers, possessives ---
-LIMB_PART = re.compile(r"\b(?:(left|right|both|each|either|other)\s+)?(arms?|hands?|fists?|elbows?|"
+# a limb and its side, or the limb after "with" ("with the left hand"; groups: with, side, limb)
+LIMB_PART = re.compile(r"\b(with\s+(?:(?:the|his|her|their|a)\s+)?)?"
+                       r"(?:(left|right|both|each|either|other)\s+)?(arms?|hands?|fists?|elbows?|"
                    r"wrists?|fingers?|palms?|shoulders?|forearms?|thumbs?|legs?|foot|feet|knees?|"
                    r"toes?|heels?|ankles?|thighs?|shins?)\b")
 _MODIFIER_MARKS = listed("modifier_marks")
 MODIFIER_MARK = rx(rf"(?<!while)(?<!with)(?<!\bas)\s*,?\s+(?=(?:{_MODIFIER_MARKS})\b)|"
                    r"(?<!while)\s*,\s+(?=\w+ing\b)|\s+and\s+(?=\w+ing\b)")
-# "with the left hand", a modifier's own limb ("(the) left arm raised": side, limb, the rest)
-WITH_LIMB = re.compile(r"\bwith\s+(?:(?:the|his|her|their|a)\s+)?" + LIMB_PART.pattern[2:])
+# a modifier's own limb ("(the) left arm raised": side, limb, the rest)
 MODIFIER_LIMB = re.compile(r"^(?:(?:the|a|an|his|her|their)\s+)?(?:(left|right|both|other)\s+)?"
                            r"(?:(arms?|hands?|fists?|legs?|foot|feet|knees?|elbows?|palms?)\b)?\s*(.*)$")
 # Both limbs written for one side ("both clenched fists" → "the clenched left fist"): groups are

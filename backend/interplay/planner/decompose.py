@@ -90,11 +90,11 @@ def parts_in(text: str) -> list[str]:
     with no side named, the right arm."""
     if listed("handshake").search(text) and not _said(text, "left", "both"):
         return ["right_arm"]
-    m = g.WITH_LIMB.search(text)
-    found = _limbs(m.group(1), m.group(2)) if m else []
-    if not found:
-        m = g.LIMB_PART.search(text)
-        found = _limbs(m.group(1), m.group(2)) if m else []
+    said = list(g.LIMB_PART.finditer(text))
+    m = next((m for m in said if m.group(1)), None)          # "with (the) left hand"
+    found = _limbs(m.group(2), m.group(3)) if m else []
+    if not found and said:
+        found = _limbs(said[0].group(2), said[0].group(3))    # the first limb said
     return found
 
 

@@ -38,6 +38,7 @@ from interplay.planner.resolve import coverage_of, not_understood, resolve
 from interplay.planner.schema import MAX_REPEAT, Plan
 from interplay.planner.segments import MAX_SECONDS, Step, timed
 from interplay.planner.trajectory_text import parse as parse_trajectory
+from interplay.planner.trajectory_text import turns_at_clock
 from interplay.planner.verbs import gerund
 from interplay.text.encoder import get_encoder
 
@@ -194,7 +195,7 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
             clause.repeat = MAX_REPEAT
         if steps:
             _other_side(clause, steps[-1].action, reasons)
-        if steps and g.CLOCK_TURN.match(clause.text) and steps[-1].action.verb is not None \
+        if steps and turns_at_clock(clause.text) and steps[-1].action.verb is not None \
                 and steps[-1].action.verb.kind == "travel":     # "walks 5 m and turns right at 3 o'clock"
             before = steps[-1]
             before.action.text = f"{before.action.text} and {clause.text}"

@@ -155,3 +155,35 @@ def path_length(spec: TrajectorySpec) -> float | None:
     return {"circle": circle, "arc": circle, "spiral": circle * 0.6, "figure_eight": 2 * circle,
             "square": 4 * size, "heart": 3.5 * size, "zigzag": 3.0 * size, "s_curve": 2.5 * size,
             "line": None, "polyline": None, "free": None}[spec.shape]
+
+
+def _word_char(c: str) -> bool:
+    return c.isalnum() or c == "_"
+
+
+def turns_at_clock(clause: str) -> bool:
+    """Does the clause only turn at a clock hour ("turns right at 3 o'clock", "he turns at two
+    oclock")? It opens with "turn(s)" (after "he", "she", "they" or "it") and says "o'clock",
+    "oclock" or "o clock" later on its line."""
+    at = 0
+    subject = next((p for p in ("he", "she", "they", "it")
+                    if clause.startswith(p) and clause[len(p):len(p) + 1].isspace()), None)
+    if subject is not None:
+        at = len(subject)
+        while at < len(clause) and clause[at].isspace():
+            at += 1
+    word = next((w for w in ("turns", "turn") if clause.startswith(w, at)
+                 and not _word_char(clause[at + len(w):at + len(w) + 1] or " ")), None)
+    if word is None:
+        return False
+    line_end = clause.find("\n", at)
+    for i in range(at + len(word), line_end if line_end >= 0 else len(clause)):
+        if clause[i] != "o" or _word_char(clause[i - 1]):
+            continue                      # an "o" that opens a word, on the turn's line
+        j = i + 1 + (clause[i + 1:i + 2] == "'")
+        while j < len(clause) and clause[j].isspace():
+            j += 1
+        if clause.startswith("clock", j) and not _word_char(clause[j + 5:j + 6] or " "):
+            return True
+    return False
+
