@@ -82,7 +82,9 @@ def _activity_over_verb(seg: GenerationSegment, encoder) -> tuple[Primitive, flo
     entry = catalogue().get(cov.entry) if cov is not None and cov.entry else None
     if cov is None or cov.how != "capture" or entry is None or entry.kind not in ("whole", "part", "travel"):
         return None
-    if entry.posture or entry.ends_in:      # "sits … and knits": the posture the verb asks wins
+    # "sits … and knits": the posture the verb asks wins; ending up standing (every way of
+    # travelling, a skip among them: "skips with a rope") is no posture asked
+    if entry.posture or entry.ends_in not in (None, "standing"):
         return None
     acts = activities()
     if not acts:
