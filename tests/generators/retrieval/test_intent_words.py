@@ -27,6 +27,7 @@ def test_turns(text, turn):
 
 def test_on_the_spot_and_stopping():
     assert intent("a person hops on the spot").in_place
-    assert not intent("a person dances on the spot").in_place       # no action to keep put
+    assert intent("a person dances on the spot").in_place           # kept put (on_the_spot.py)
+    assert not intent("a person dances").in_place
     assert intent("a person stops walking and stands still").still
     assert not intent("a person walks, then stops").still

@@ -6,7 +6,9 @@ and marks the segment as synthetic; a couple's dance is drawn close together, a 
 captured salsa follower spins (`couple.py`). One person's segment is drawn for what its words ask
 beyond the nearest captures (`tracks.py`: direction of travel, side, counts, postures, with
 mirrored and time-reversed views of the captures); a track shorter than its segment holds its
-last pose to the segment's end.
+last pose to the segment's end. A segment whose words ask to stay on the spot ("hop on the
+spot", "march in place") and whose frames still travel has its drift taken out; the segments
+after it continue from where it now ends (`on_the_spot.py`).
 
     gen = RetrievalGenerator(RetrievalIndex(default_clips(), get_encoder()))
     plan = gen.plan(Request("a person walks forward then jumps", seconds=6, seed=3))
@@ -30,6 +32,7 @@ from interplay.generators.plan import (
     RetrievalChoice,
     Source,
 )
+from interplay.generators.retrieval import on_the_spot
 from interplay.generators.retrieval.couple import couple_track
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieval.intent import FASTEST_M_S, intent, speed_of
@@ -180,6 +183,7 @@ class RetrievalGenerator:
         every frame of the plan (round(seconds × 20))."""
         persons, seed = plan.persons, plan.seed
         stitcher, expected, after = Stitcher(persons), 0, None
+        moved = np.zeros(3)     # the drift taken out of on-the-spot segments so far (x, 0, z)
         for seg in plan.segments:
             start, end = seg.start, seg.end
             if start != expected or end <= start:
@@ -190,6 +194,11 @@ class RetrievalGenerator:
                                                        seg.repeat, seg.travel)
             after = _ends(retrieval)
             frames = self._render(stitcher, retrieval, persons, end - start)
+            if persons == 1:    # "hop on the spot": a capture that travels kept on the spot
+                frames[0] = (frames[0] + moved).astype(frames[0].dtype)
+                if on_the_spot.asks(seg):
+                    frames[0], more = on_the_spot.stay(frames[0])
+                    moved += more
             if any(len(f) != end - start for f in frames):
                 raise ValueError(f"segment {seg.index}: the plan's pieces do not last "
                                  f"{end - start} frames")

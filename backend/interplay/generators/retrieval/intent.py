@@ -242,7 +242,8 @@ def intent(prompt: str, repeat: int = 1, travel: str | None = None) -> Intent:
                   start=start, end=end, rises=rises, speed=speed_of(prompt),
                   turn=turn_of(prompt, repeat) if action is None else None,
                   still=still_of(prompt) and action is None and go is None,
-                  # an action on the spot (hops, jumps, kicks): a wider text draw kept only
-                  # for staying put plays clips of other actions that do
-                  in_place=bool(_entry("on the spot").search(prompt)) and go is None and action is not None,
+                  # on the spot (hops, "march in place", "jog on the spot"): an action's draws
+                  # that stay put are preferred (tracks.py), frames that still travel are kept
+                  # on the spot (on_the_spot.py); a direction of travel in the same words wins
+                  in_place=bool(_entry("on the spot").search(prompt)) and go is None,
                   hold=hold)

@@ -23,7 +23,7 @@ from collections.abc import Callable
 import numpy as np
 
 from interplay.generators.retrieval import constrained as con
-from interplay.generators.retrieval import counts, postures, verify
+from interplay.generators.retrieval import counts, on_the_spot, postures, verify
 from interplay.generators.retrieval.index import RetrievalIndex
 from interplay.generators.retrieval.intent import LOW, Intent, count_of
 
@@ -46,7 +46,7 @@ def single_track(index: RetrievalIndex, text: str, frames: int, rng: np.random.G
                  after: dict | None, intent: Intent) -> list[dict]:
     """The pieces of one person's track for a segment (see the module doc); a count asked of
     an action the captures perform whole (a cartwheel, a flip, a spin) is kept exact."""
-    pieces = _drawn(index, text, frames, rng, after, intent)
+    pieces = _drawn(index, on_the_spot.travelling(text, intent), frames, rng, after, intent)
     # (spins are held to their turn, not to whole captures: a spin capture may turn less)
     count = count_of(text) if intent.action is None and intent.hold is None and intent.turn is None else None
     return _counted_whole(index, pieces, count) if count else pieces
@@ -81,6 +81,11 @@ def _drawn(index: RetrievalIndex, text: str, frames: int, rng: np.random.Generat
     start, end = start_end(index, intent, after)
     draw: Callable[[], list[dict] | None] | None = None
     specs = verify.checks(intent, start, end, first=after is None)
+    if intent.in_place and intent.action is None and not intent.still:
+        # a way of travelling done on the spot ("march in place", "jog on the spot"): the
+        # captures that stay put are of other actions (a kick, a dance), so draws are not
+        # held to it; the drawn march is kept on the spot afterwards (on_the_spot.py)
+        specs = [s for s in specs if s["check"] != "stays_in_place"]
     if end is not None and start is not None and (start in LOW or end in LOW):
         options = postures.posture_options(index, text, start, end, frames, after)
         if options:

@@ -59,7 +59,8 @@ def checks(intent: Intent, start: str | None = None, end: str | None = None,
         deg, way = intent.turn
         out.append({"check": "turn", "degrees": deg, "direction": way,
                     "tolerance": 45 if deg <= 180 else 60 if deg <= 360 else 90})
-    if intent.speed is not None and intent.action is None and end not in LOW:
+    # ("jog on the spot": the speed of a jog's steps, not of travel; stays_in_place holds it)
+    if intent.speed is not None and intent.action is None and end not in LOW and not intent.in_place:
         out.append({"check": "speed_band", "band": intent.speed})
     if start is not None and (start in LOW or end in LOW):
         out.append({"check": "posture_at_start", "posture": start})
