@@ -22,19 +22,17 @@ are fixed joints, so no file turns a hand; a leaf not carried is stored as NaN).
 format's bones are read by `leaves_read.py`, which replays the positions' own pipeline on
 the rotations (the converter's lead-in or T-pose cut, the capture rate's resampling to 20 fps
 by slerp at the very times the positions take, the canonical yaw). Toes (the rig's "left_foot" / "right_foot", the ball of the foot; `rig/leaves.py` keeps them off
-the floor on top) are carried where the file rests as the rig does and has a toe bone: Acclaim's
-ltoes / rtoes (HDM05, cmu-asfamc, cmu-bvh 16_01/02; in the 8-action files the toe bone's turn
-sits at the "lfoot" joint): 331 people. Not carried: the Daz files (cmu-bvh, salsa) end the leg
-at the foot and DeepMimic's humanoid at the ankle; Bandai's Toes_L/_R and iClone's ToeBase
-exist, but a correction measured on their feet leaves planted toes 21–25° off the foot's
-heading, so they are left to the rig (`leaves_read.TOE_BONES`).
+the floor on top) are carried where the file has a toe bone: Acclaim's ltoes / rtoes (HDM05,
+cmu-asfamc, cmu-bvh 16_01/02; in the 8-action files the toe bone's turn sits at the "lfoot"
+joint), Bandai's Toes_L/_R and iClone's ToeBase: 962 people. Not carried: the Daz files
+(cmu-bvh, salsa) end the leg at the foot and DeepMimic's humanoid at the ankle. A toe's
+correction is measured on planted feet for every source (`toe_correction`).
 
 Rest correction C per leaf (the world orientation stored is the file's leaf frame times C):
 - Daz, Acclaim (HDM05, cmu-asfamc, cmu-bvh's Acclaim-named files, the 8-action exp-maps) and
   DeepMimic rest as the rig does, or as it does turned (DeepMimic faces +X: C is +90° about
   Y): the head needs none, each hand the turn from the rig's rest hand (along the template's
-  rest forearm) onto the file's, each toe from the rig's (pointing ahead) onto the file's toe
-  bone, exact, per person.
+  rest forearm) onto the file's, exact, per person.
 - Bandai Namco's rest figure lies along +X and iClone's CC_Base bones have axes of their own,
   so C is measured per source,
   as the SVD projection of a mean rotation: a hand's from the file's forearm frame to the
@@ -64,7 +62,7 @@ import numpy as np
 
 from interplay.data.leaves_read import acclaim_globals, bvh_globals, deepmimic_globals, expmap_globals
 from interplay.motion import skeleton as sk
-from interplay.motion.captured_leaves import LEAF_NAMES, leaves_file
+from interplay.motion.captured_leaves import LEAF_NAMES, TOES, leaves_file
 from interplay.motion.clip import DATA_DIR, Clip, load_clips
 from interplay.motion.rotations import matrix_to_quat, quat_to_matrix, yaw_matrix
 
@@ -96,6 +94,28 @@ def rest_corrections(samples: list[tuple[dict[str, np.ndarray], np.ndarray]]) ->
         u, _, vt = np.linalg.svd(m)
         out[leaf] = u @ np.diag([1.0, 1.0, np.linalg.det(u @ vt)]) @ vt
     return out
+
+
+def toe_correction(toe: str, samples: list[tuple[dict[str, np.ndarray], np.ndarray]]) -> np.ndarray:
+    """A toe's correction C (3, 3), for every source with toes: measured on its foot's frame
+    (`rest_corrections`) a toe bone need not continue its foot at rest (Bandai's has no length,
+    iClone's bends up), which left planted toes 21–25° off the foot's heading, and the exact
+    rest corrections left Acclaim's rolled 11–22°; so it is measured where the foot is planted
+    (the ball within 4 cm of the floor), where a toe lies flat along the foot's heading: the
+    SVD projection of the mean rotation from the file's toe frame onto that flat frame (the
+    rig's rest toe: ahead +Z, up +Y), as the head's onto the facing."""
+    from interplay.motion.kinematics import floor_height
+    ankle = J[toe.replace("foot", "ankle")]
+    total = np.zeros((3, 3))
+    for globs, joints in samples:
+        planted = joints[:, J[toe], 1] - floor_height([joints]) < 0.04
+        ahead = (joints[planted, J[toe]] - joints[planted, ankle]) * [1.0, 0.0, 1.0]
+        ahead /= np.maximum(np.linalg.norm(ahead, axis=-1, keepdims=True), 1e-9)
+        up = np.broadcast_to([0.0, 1.0, 0.0], ahead.shape)
+        flat = np.stack([np.cross(up, ahead), up, ahead], axis=-1)         # columns x, y, z
+        total += np.einsum("tji,tjk->ik", globs[toe][planted, 0], flat)
+    u, _, vt = np.linalg.svd(total)
+    return u @ np.diag([1.0, 1.0, np.linalg.det(u @ vt)]) @ vt
 
 
 def _carry(clip: Clip, src: Path) -> list[dict[str, np.ndarray] | None]:
@@ -166,13 +186,18 @@ def build_leaves(source: str, src: Path, out: Path) -> dict:
         fix = rest_corrections([(g, np.asarray(clip.people[k], np.float64)) for clip, k, g in people[:RESTS]])
         fix["head"] = rest_corrections([(g, np.asarray(clip.people[k], np.float64))
                                         for clip, k, g in walks[:RESTS]])["head"]
+    # Toes measured on planted feet for every source (`toe_correction`): the exact corrections
+    # left Acclaim's planted toes rolled 11–22° on their feet, the foot's frame Bandai's and
+    # iClone's 21–25° off their heading.
+    with_toes = [(g, np.asarray(clip.people[k], np.float64)) for clip, k, g in people if TOES[0] in g]
+    toes = {toe: toe_correction(toe, with_toes[:RESTS]) for toe in TOES} if with_toes else {}
     quats, index, agree = [], [], []
     start = 0
     for clip, k, g in people:
-        rest = dict(zip(LEAF_NAMES, g["rest"])) if exact else fix     # exact: the person's own file
+        rest = {**(dict(zip(LEAF_NAMES, g["rest"])) if exact else fix), **toes}   # exact: per file
         q = np.full((len(g["head"]), len(LEAF_NAMES), 4), np.nan)      # NaN: a leaf not carried
         for i, leaf in enumerate(LEAF_NAMES):
-            if leaf in g:
+            if leaf in g and leaf in rest:
                 q[:, i] = matrix_to_quat(g[leaf][:, 0] @ rest[leaf])
         index.append({"id": clip.id, "person": k, "start": start, "frames": len(q)})
         quats.append(q.astype(np.float16))
@@ -185,8 +210,9 @@ def build_leaves(source: str, src: Path, out: Path) -> dict:
                         index=np.array(json.dumps(index)))
     turn = {leaf: round(float(np.degrees(np.arccos(np.clip((np.trace(c) - 1) / 2, -1, 1)))), 1)
             for leaf, c in fix.items() if np.isfinite(c).all()}
-    toes = sum(int(np.isfinite(q[:, 3:].astype(np.float64)).all(axis=(1, 2)).any()) for q in quats)
-    return {"source": source, "people": len(index), "toes": toes, "clips": len({row["id"] for row in index}),
+    fix = {**fix, **toes}
+    carried_toes = sum(int(np.isfinite(q[:, 3:].astype(np.float64)).all(axis=(1, 2)).any()) for q in quats)
+    return {"source": source, "people": len(index), "toes": carried_toes, "clips": len({row["id"] for row in index}),
             "frames": start, "rest_correction_deg": turn,
             "agreement_deg": {leaf: round(float(np.median([a[leaf] for a in agree if leaf in a])), 1)
                               for leaf in LEAF_NAMES if any(leaf in a for a in agree)}}

@@ -8,7 +8,8 @@ parent bone's (column vectors, Y up), and "rest" (5, 3, 3) (LEAF_NAMES' order, N
 not carried) where the family rests as the rig does (a T-pose facing +Z, left at +X): the exact
 correction per leaf (identity for the head; each hand the turn from the rig's rest hand, along
 its rest forearm, onto the file's rest hand bone; each toe from the rig's, pointing +Z, onto
-the file's toe bone). Without "rest" the correction is measured (`leaves.rest_corrections`).
+the file's toe bone, which `leaves.py` replaces by one measured on planted feet). Without
+"rest" the correction is measured (`leaves.rest_corrections`).
 
 Families and their leaf bones (bone, parent bone):
 - Daz BVH (cmu-bvh, salsa): head on neck, l/rHand on l/rForeArm; no toe (the leg ends at the
@@ -16,10 +17,10 @@ Families and their leaf bones (bone, parent bone):
 - Acclaim-named BVH (cmu-bvh 16_01, 16_02; a joint sits at the start of its Acclaim bone):
   head on upperneck, l/rhand on l/rradius, l/rtoes on l/rfoot; exact rest (a T-pose, the hand
   bone along +X, each toe towards its End Site).
-- Bandai Namco BVH: Head on Neck, Hand_L/_R on LowerArm_L/_R; measured (rests along +X);
-  its toes not carried (TOE_BONES).
-- CC_Base BVH (cmu-iclone): CC_Base_Head on NeckTwist02, L/R_Hand on L/R_Forearm; measured;
-  its toes not carried (TOE_BONES).
+- Bandai Namco BVH: Head on Neck, Hand_L/_R on LowerArm_L/_R, Toes_L/_R on Foot_L/_R;
+  measured (rests along +X; the toes on planted feet, `leaves.toe_correction`).
+- CC_Base BVH (cmu-iclone): CC_Base_Head on NeckTwist02, L/R_Hand on L/R_Forearm, L/R_ToeBase
+  on L/R_Foot; measured, as Bandai's.
 - Acclaim ASF/AMC (HDM05, cmu-asfamc): head on upperneck, l/rhand on l/rradius, l/rtoes on
   l/rfoot; exact.
 - The 8-action exp-maps (`retarget/cmu_8action`, Acclaim's bones, row vectors): a bone is
@@ -57,12 +58,12 @@ BONES: dict[str, dict[str, tuple[str, str]]] = {
                 "left_wrist": ("CC_Base_L_Hand", "CC_Base_L_Forearm"),
                 "right_wrist": ("CC_Base_R_Hand", "CC_Base_R_Forearm")},
 }
-# Per BVH family whose toes are carried, each toe's bone and its parent's (the foot). Only the
-# exactly resting families: Bandai's Toes_L/_R and iClone's ToeBase exist, but a correction
-# measured on the foot's frame leaves their planted toes 21–25° off the foot's heading (iClone's
-# also 29° up; the toe bone does not continue its foot at rest), so they are not carried.
+# Per BVH family with toes, each toe's bone and its parent's (the foot).
 TOE_BONES: dict[str, dict[str, tuple[str, str]]] = {
     "acclaim": {"left_foot": ("ltoes", "lfoot"), "right_foot": ("rtoes", "rfoot")},
+    "bandai-namco": {"left_foot": ("Toes_L", "Foot_L"), "right_foot": ("Toes_R", "Foot_R")},
+    "cc-base": {"left_foot": ("CC_Base_L_ToeBase", "CC_Base_L_Foot"),
+                "right_foot": ("CC_Base_R_ToeBase", "CC_Base_R_Foot")},
 }
 # Per exactly resting BVH family, each hand or toe bone's rest direction: (from, to) positions.
 REST_DIRECTIONS: dict[str, dict[str, tuple[str, str]]] = {
