@@ -30,6 +30,10 @@ def test_people_nouns_read_as_people_and_other_words_not():
     ("someone taps a stranger on the shoulder", "one person taps the other person on the shoulder"),
     ("two boxers circle each other in the ring", "two people circle each other in the ring"),
     ("a couple strolls arm in arm", "two people strolls arm in arm"),
+    ("an angry man shouts at a waiter", "one person shouts at the other person"),
+    ("a tired worker carries a heavy box", "one person carries a heavy box"),
+    ("a nurse helps an old man walk down the hall", "one person helps the other person walk down the hall"),
+    ("mom tucks her son into bed", "one person tucks the other person into bed"),
 ])
 def test_a_prompt_names_its_people_neutrally(prompt, plain):
     assert neutral(prompt, get_encoder()) == plain
@@ -38,5 +42,6 @@ def test_a_prompt_names_its_people_neutrally(prompt, plain):
 def test_a_prompt_already_neutral_or_without_people_is_kept():
     enc = get_encoder()
     for prompt in ("one person pushes the other", "two people throw a ball back and forth",
-                   "jump over the fence"):
+                   "jump over the fence", "wave, then sip a hot coffee", "pick up a big box and carry it away",
+                   "sidestep to the right and then back to the left", "give each other a high five"):
         assert neutral(prompt, enc) == prompt

@@ -35,3 +35,16 @@ def test_a_subject_noun_with_its_object_is_a_verb():
     said = embedded_plan("fan yourself with a newspaper", 1, 6.0).segments[0].prompt
     assert "fan themselves" in said
     assert embedded_plan("a fan cheers in the stands", 1, 6.0).segments[0].prompt == "a person cheers in the stands"
+
+
+def test_a_bare_unknown_verb_after_a_known_one_is_kept_not_dropped():
+    """"wave, then sip a hot coffee": the instruction's bare verb is not in the catalogue, and
+    the clause is shown as the nearest captures instead of vanishing."""
+    for prompt, said in (("wave, then sip a hot coffee", "a person sip a hot coffee"),
+                         ("jump twice and then juggle three balls", "a person juggle three balls"),
+                         ("two people argue and then one of them storms off", "a person storms off")):
+        p = embedded_plan(prompt, 1, 8.0)
+        assert len(p.segments) == 2, [s.prompt for s in p.segments]
+        assert p.segments[1].prompt == said and p.segments[1].coverage.how == "nearest"
+    states = embedded_plan("run, then feel happy", 1, 6.0)       # a state is still no motion
+    assert [s.prompt for s in states.segments] == ["a person runs"]

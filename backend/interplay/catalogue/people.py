@@ -72,7 +72,9 @@ def _phrases(tokens: list[str]) -> list[tuple[int, int, list[int], bool]]:
 def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     """The prompt with its people named "one person" / "the other person" ("two people" for a
     pair named at once: "two kids", "a couple"), in order; everything else as written. The
-    prompt itself when it already says "the other". People named by a noun in `keep` count in the order but stay as written ("the man hands a menu to a guest" → "the
+    prompt itself when it already says "the other", or when it does not open with a person
+    ("tiptoe past the sleeping baby", "walk in a straight line": an instruction, whose nouns
+    are read no further; MiniLM alone cannot tell "a hot | coffee" from "a waiter | hands"). People named by a noun in `keep` count in the order but stay as written ("the man hands a menu to a guest" → "the
     man hands a menu to the other person")."""
     tokens = prompt.split()
     if "the other" in prompt.lower():
@@ -82,16 +84,17 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     words = sorted({_bare(tokens[j]) for _, _, c, _ in found for j in c})
     margin = dict(zip(words, person_margin(words, encoder)))
     named = [(start, start + 1, False) for start, w in enumerate(tokens) if _bare(w) in t["alone"]]
-    first = _bare(tokens[0]) if tokens else ""
-    if first not in t["alone"] and (first and not found or (found and found[0][0] > 0 and first not in t["determiners"])):
-        if person_margin([first], encoder)[0] > t["first_margin"]:     # a name first: "Mom tucks …"
-            named.append((0, 1, False))
+    if _named_first(tokens, found, encoder):                   # a name first: "Mom tucks …"
+        named.append((0, 1, False))
     for start, _, cands, pair in found:
-        best = next((j for j in cands if margin[_bare(tokens[j])] > t["margin"]), None)
-        if best is not None:    # the phrase ends at its first person word ("a waiter | hands")
-            named.append((start, best + 1, pair or _bare(tokens[best]) in t["pair_nouns"]))
+        noun = _noun(tokens, cands, margin, pair)
+        if noun is not None:
+            named.append((start, noun + 1, pair or _bare(tokens[noun]) in t["pair_nouns"]))
+    named.sort()
+    if not named or named[0][0] != 0:       # a prompt that opens with its people, or none
+        return prompt
     swaps, seen = [], 0
-    for start, end, pair in sorted(named):
+    for start, end, pair in named:
         tail = tokens[end - 1][-1] if tokens[end - 1][-1:] in _PUNCT else ""
         noun = _bare(tokens[end - 1])
         if noun in keep:
@@ -105,6 +108,43 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     for start, end, text in reversed(swaps):
         tokens[start:end] = [text]
     return " ".join(tokens)
+
+
+def _verb_like(word: str) -> bool:
+    """A third-person verb's ending ("hands", "carries"): what follows a singular subject."""
+    w = _bare(word)
+    return w.endswith("s") and not w.endswith("ss")
+
+
+def _noun(tokens: list[str], cands: list[int], margin: dict, pair: bool) -> int | None:
+    """The index of a phrase's person noun, or None: its first word read as a person, moved on
+    to a later one read as a person more surely ("an angry | man"). A singular phrase's word
+    read as a person only weakly (under `sure_margin`) and followed by another that is not a
+    verb's form describes a thing ("a hot | coffee", "the warm | sun"); a pair's noun is
+    followed by a bare verb ("two kids play"), and so is a person told to do something ("helps
+    an old man | walk")."""
+    bound = table()["margin"]
+    score = [float(margin[_bare(tokens[j])]) for j in cands]
+    k = next((n for n, m in enumerate(score) if m > bound), None)
+    if k is None:
+        return None
+    while k + 1 < len(cands) and score[k + 1] > max(score[k], table()["sure_margin"]):
+        k += 1
+    if not pair and score[k] < table()["sure_margin"] and k + 1 < len(cands) \
+            and not _verb_like(tokens[cands[k + 1]]):
+        return None
+    return cands[k]
+
+
+def _named_first(tokens: list[str], found: list, encoder) -> bool:
+    """The prompt opens with a person named with no determiner ("mom tucks her son …"): read
+    as a person only more surely (`first_margin`) and before a verb's form."""
+    t = table()
+    first = _bare(tokens[0]) if tokens else ""
+    if not first or first in t["alone"] or first in t["determiners"] or (found and found[0][0] == 0):
+        return False
+    return len(tokens) > 1 and _verb_like(tokens[1]) and \
+        float(person_margin([first], encoder)[0]) > t["first_margin"]
 
 
 def _bare(word: str) -> str:

@@ -27,6 +27,9 @@ SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest k
 _FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
 # The words after a subject noun with no article that make it a verb with its object ("fan
 # yourself", "fan the flames") rather than a subject ("fan cheers").
+# Words that open a clause without being its verb ("slowly", "with both arms", "the end").
+_NOT_A_VERB = {"with", "without", "while", "slowly", "quickly", "then", "and", "but", "so", "very",
+               "again", "still", "there", "here", "now", "this", "that", "these", "those", "all"}
 _OBJECT_NEXT = {"yourself", "himself", "herself", "themselves", "oneself", "the", "a", "an", "his",
                 "her", "their", "your", "my", "it", "me", "him", "them", "us"}
 
@@ -39,6 +42,8 @@ def _without_subject(words: list[str]) -> list[str]:
         if words[i] in SUBJECT_NOUNS and (i == 0 or words[i - 1] not in _FILLER) and \
                 i + 1 < len(words) and words[i + 1] in _OBJECT_NEXT:
             break                    # a verb with its object ("fan yourself"), not a subject
+        if words[i] == "one" and words[i + 1:i + 3] in (["of", "them"], ["of", "us"]):
+            i += 2                   # "one of them storms off"
         i += 1
     return words[i:] if i < len(words) else words
 
@@ -52,8 +57,11 @@ def _unknown_verb(words: list[str]) -> bool:
         return False
     head = words[0]
     states = set(catalogue().words.lists.get("not_motion", ()))
-    return head not in states and (head.endswith("s") and not head.endswith("ss") or
-                                   head.endswith("ing"))
+    if head in states or head in _NOT_A_VERB or not head.isalpha():
+        return False
+    # "juggles", "juggling", and a bare form: a clause said as an instruction ("wave, then sip
+    # a hot coffee") or after a plural subject ("they sip …"); the subject is gone by here
+    return len(head) >= 3
 
 
 _WORD_CHARS = frozenset("abcdefghijklmnopqrstuvwxyz-")
