@@ -87,9 +87,9 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     if _named_first(tokens, found, encoder):                   # a name first: "Mom tucks …"
         named.append((0, 1, False))
     for start, _, cands, pair in found:
-        noun = _noun(tokens, cands, margin, pair)
-        if noun is not None:
-            named.append((start, noun + 1, pair or _bare(tokens[noun]) in t["pair_nouns"]))
+        at = _noun(tokens, cands, margin, pair)
+        if at is not None:
+            named.append((start, at + 1, pair or _bare(tokens[at]) in t["pair_nouns"]))
     named.sort()
     if not named or named[0][0] != 0:       # a prompt that opens with its people, or none
         return prompt
