@@ -106,6 +106,7 @@ def main(argv: list[str]) -> int:
     ap.add_argument("--frames", default="0,10,20,30,40,50", help="motion frames (from 0)")
     ap.add_argument("--watch", default="head", help="the joint the camera frames with the neck")
     ap.add_argument("--size", type=float, default=1.0, help="the view's height (m)")
+    ap.add_argument("--close", action="store_true", help="aim at the joint watched alone (a foot's toes)")
     ap.add_argument("--no-leaves", action="store_true",
                     help="leave out the edit's and the captures' head/wrist rotations (the derived ones)")
     ap.add_argument("--out-dir", default=str(Path(__file__).resolve().parents[1] / "docs" / "images"))
@@ -123,7 +124,8 @@ def main(argv: list[str]) -> int:
     right = np.cross(forward, [0.0, 1.0, 0.0])       # the person's right, seen from the front
     look = np.cos(turn) * forward + np.sin(turn) * right
     # Aimed between the neck and the joint watched (the waving wrist, the head), over the frames.
-    watched = joints[frames][:, [sk.NECK, sk.JOINT_INDEX[a.watch]]].mean((0, 1))
+    aim = [sk.JOINT_INDEX[a.watch]] if a.close else [sk.NECK, sk.JOINT_INDEX[a.watch]]
+    watched = joints[frames][:, aim].mean((0, 1))
     camera = watched + 4.0 * look
     with tempfile.TemporaryDirectory() as tmp:
         glb = Path(tmp) / f"{a.name}.glb"

@@ -225,12 +225,13 @@ def test_views_and_joins():
     assert quat_steps(head[23:25 + FADE + 1]).max() < max(jump, 1.0)
 
 
-def test_carried_toes_lie_along_their_feet_and_reach_the_rig():
-    """The toes carried: a planted toe lies flat along its foot (per source the median person's
-    tip within 12° of horizontal and 8° of the foot's heading, its side axis within 10° of level;
-    measured -10.7–0.7°, 0.3–5.2° and 0.4–8.1°; the correction measured on planted feet,
-    `leaves.toe_correction`); the rig exports the capture's toe where the floor does not bend
-    it, not the derived one (the identity on the ankle)."""
+def test_carried_toes_lie_along_their_feet_and_are_left_to_the_rig():
+    """The toes the side files hold: a planted toe lies flat along its foot (per source the
+    median person's tip within 12° of horizontal and 8° of the foot's heading, its side axis
+    within 10° of level; measured -10.7–0.7°, 0.3–5.2° and 0.4–8.1°; the correction measured on
+    planted feet, `leaves.toe_correction`). The exports leave toes to the rig
+    (`captured_leaves.EXPORTED`): on planted feet a carried toe sits 21–28° (median) off the
+    rig's own ankle frame, a kink at the ball, and HDM05's bd kicks flip the right toe 176°."""
     from interplay.motion.rotations import quat_to_matrix as q2m
     rows: dict[str, list[tuple[float, float, float]]] = {}
     for clip in default_clips():
@@ -258,13 +259,7 @@ def test_carried_toes_lie_along_their_feet_and_reach_the_rig():
     for source, got in rows.items():
         level, heading, roll = np.median(np.asarray(got), axis=0)
         assert abs(level) < 12.0 and heading < 8.0 and roll < 10.0, (source, level, heading, roll)
+    from interplay.motion.captured_leaves import EXPORTED, _source_local
     clip = next(c for c in default_clips() if c.source == "hdm05" and "kick" in c.id)
-    joints = np.asarray(clip.people[0], np.float64)
-    floor = floor_height([joints])
-    local = captured_local(joints, captured_world(clip.id, 0, len(joints)), floor=floor)
-    rig = solve_rig(joints, floor=floor, leaves=local)
-    high = joints[:, J["left_foot"], 1] - floor > 0.15                 # a kicking foot, off the floor
-    assert high.sum() >= 5
-    np.testing.assert_allclose(np.abs(np.sum(rig.rotations[high, J["left_foot"]] * local["left_foot"][high], -1)),
-                               1.0, atol=1e-9)
-    assert not np.allclose(np.abs(rig.rotations[high, J["left_foot"], 0]), 1.0, atol=1e-3)
+    assert "right_foot" in captured_world(clip.id, 0, clip.frames)
+    assert set(_source_local(clip.id, 0)) == set(EXPORTED) == {"head", *HANDS}

@@ -18,7 +18,7 @@ import numpy as np
 
 from interplay.motion.rig.steps import STEP
 
-LEAVES = ("head", "left_wrist", "right_wrist", "left_foot", "right_foot")
+LEAVES = ("head", "left_wrist", "right_wrist")      # what the exports take (`captured_leaves.EXPORTED`)
 # One-person prompts over what retrieve-then-edit does: plain captures, arm actions (a wave, a
 # raised arm), primitives (a nod, a shake, jumping jacks, claps), holds, a slowed walk.
 PROMPTS = (
@@ -58,6 +58,7 @@ def captured_report() -> None:
             row["carried"].add(clip.id)
             row["with"] += 1
             row["steps"] += len(joints) - 1
+            world = {k: v for k, v in world.items() if k in LEAVES}
             excess = leaf_excess(solve_rig(joints, floor=floor, leaves=captured_local(joints, world, floor=floor)))
             for leaf in LEAVES:
                 over = excess[leaf] > 0

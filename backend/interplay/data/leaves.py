@@ -26,7 +26,10 @@ the floor on top) are carried where the file has a toe bone: Acclaim's ltoes / r
 cmu-asfamc, cmu-bvh 16_01/02; in the 8-action files the toe bone's turn sits at the "lfoot"
 joint), Bandai's Toes_L/_R and iClone's ToeBase: 962 people. Not carried: the Daz files
 (cmu-bvh, salsa) end the leg at the foot and DeepMimic's humanoid at the ankle. A toe's
-correction is measured on planted feet for every source (`toe_correction`).
+correction is measured on planted feet for every source (`toe_correction`). The exports do not
+use them yet (`captured_leaves.EXPORTED`): a carried toe sits 21–28° (median, planted feet) off
+the rig's own ankle frame, a kink at the ball, and some captures flip a toe 176° (HDM05's bd
+kicks); a toe's flex about the rig's foot would be the part worth carrying.
 
 Rest correction C per leaf (the world orientation stored is the file's leaf frame times C):
 - Daz, Acclaim (HDM05, cmu-asfamc, cmu-bvh's Acclaim-named files, the 8-action exp-maps) and

@@ -1,4 +1,5 @@
-"""The captures' own head, hand and toe orientations, where the library carries them: side files
+"""The captures' own head, hand and toe orientations, where the library carries them (the
+exports take the head and hands, EXPORTED): side files
 models/data/leaves/<source>.npz written by `interplay data leaves` (`data/leaves.py`, which
 says what each holds), next to the positions they belong to, never inside them.
 
@@ -25,6 +26,12 @@ from interplay.motion.clip import DATA_DIR
 LEAF_NAMES: tuple[str, ...] = ("head", "left_wrist", "right_wrist", "left_foot", "right_foot")
 HANDS: tuple[str, ...] = ("left_wrist", "right_wrist")
 TOES: tuple[str, ...] = ("left_foot", "right_foot")       # the rig's toe joints (SMPL's "foot")
+# The leaves the exports take from a capture: not the toes, which the side files hold but which
+# look worse than the rig's own where the rig's foot is not the capture's: on planted feet a
+# carried toe sits 21–28° (median) off the rig's ankle frame, which the mesh shows as a kink
+# at the ball, and some captures flip a toe 176–178° (HDM05's bd kicks); the rig's toes bend
+# off the floor themselves (`rig/leaves.py`).
+EXPORTED: tuple[str, ...] = ("head", *HANDS)
 
 
 def leaves_file(source: str, data_dir: Path | str = DATA_DIR) -> Path:
@@ -97,7 +104,8 @@ def _source_local(clip_id: str, person: int, data_dir: str = str(DATA_DIR)) -> d
     if clip is None or person >= len(clip.people):
         return {}
     people = [np.asarray(p, np.float64) for p in clip.people]
-    world = captured_world(clip_id, person, len(people[person]), data_dir)
+    world = {k: v for k, v in captured_world(clip_id, person, len(people[person]), data_dir).items()
+             if k in EXPORTED}
     return captured_local(people[person], world, floor=floor_height(people)) if world else {}
 
 

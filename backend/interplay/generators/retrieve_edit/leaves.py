@@ -11,9 +11,9 @@ is replayed on the leaves, not on the joints):
 - the slowed last segment (`pace`): its leaves played at the same rate (slerp), the rate
   measured as `pace.rate_of` measures it, on the segment's pieces as the stitcher plays them;
 - an arm action (`arm_poses`: a pose held, a wave): that arm's wrist derived wherever the IK
-  weighs in (a wave's hand trails its forearm); the head, the other hand and the toes stay
-  captured;
-- high knees: the lifted legs' toes derived, every other leaf kept.
+  weighs in (a wave's hand trails its forearm); the head and the other hand stay captured;
+- high knees: the lifted legs' toes derived (should captured toes be exported: today the
+  exports leave every toe to the rig, `captured_leaves.EXPORTED`), every other leaf kept.
 
 Derived frames are rows of NaN; the rig turns its derived leaves into the captured ones over
 LEAF_BLEND frames at each end (`rig.leaves._given`), so an edit's ends blend. Shapes: leaves
