@@ -350,7 +350,7 @@ DURATION_STEPS = rx(r"\b(a\s+few|a\s+couple\s+of|few|several|\d+|one|two|three|f
                     rf"seven|eight|nine|ten)\s+(?:{_STEP_UNITS})\b")
 
 
-# --- two people's gestures (generators/interaction/gestures.py) ---
+# --- two people's gestures (generators/interaction/scenes/gestures.py) ---
 
 _GROUP_OF_TWO, _GROUP_NOUNS = listed("group_of_two", " "), listed("group_nouns")
 GESTURE_WHO = rx(rf"\b(?:{_GROUP_OF_TWO})\s+(?:of\s+them\s+)?(?:{_GROUP_NOUNS})?\b|"

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from interplay.generators.base import Request, generate_motion
-from interplay.generators.interaction.gestures import solo_text
+from interplay.generators.interaction.scenes.gestures import solo_text
 from interplay.generators.router import Router, load_generator
 from interplay.motion import skeleton as sk
 from interplay.motion.checks.named import plausibility, run_check

@@ -25,12 +25,14 @@ import numpy as np
 
 from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
-from interplay.generators.interaction import contest, gestures, partners, piggyback, touches, travel
+from interplay.generators.interaction import moves
 from interplay.generators.interaction.bodies import SHARED
 from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, why_not
 from interplay.generators.interaction.library import Library
 from interplay.generators.interaction.reading import read
 from interplay.generators.interaction.scene import Cast, finish
+from interplay.generators.interaction.scenes import contest, gestures, partners, piggyback, touches, travel
+from interplay.generators.interaction.scenes.after import Departure, depart, departure, retimed
 from interplay.generators.plan import GenerationPlan, Source
 from interplay.generators.retrieval.generator import RetrievalGenerator
 from interplay.generators.retrieval.index import RetrievalIndex
@@ -124,15 +126,18 @@ class InteractionGenerator:
         script = read(req.prompt, roles, self.index.encoder)
         if script is None:
             return self._fallback(req, seed, f"no interaction it composes ({why_not(req.prompt, self.index.encoder)})")
+        part = departure(base.segments, script.kind)
+        if part is not None:
+            base = retimed(base, part)
         try:
-            people, composition = self.compose(script, req, seed, roles)
+            people, composition = self.compose(script, req, seed, roles, part)
         except ValueError as exc:
             if not (script.approach and script.kind != "approach"):
                 return self._fallback(req, seed, f"the {script.kind} could not be composed ({exc})")
             script = dataclasses.replace(script, approach=False, reasons=script.reasons + (
                 f"no time to walk up to each other first in {req.seconds:g} s ({exc}): they start close",))
             try:
-                people, composition = self.compose(script, req, seed, roles)
+                people, composition = self.compose(script, req, seed, roles, part)
             except ValueError as exc2:
                 return self._fallback(req, seed, f"the {script.kind} could not be composed ({exc2})")
         plan = GenerationPlan.from_plan(base, seed=seed, generator=NAME, synthetic=True,
@@ -143,11 +148,13 @@ class InteractionGenerator:
         self._remember(req, seed, composition["script"], people)
         return plan
 
-    def compose(self, script: Script, req: Request, seed: int, roles: dict | None = None
-                ) -> tuple[list[np.ndarray], dict]:
+    def compose(self, script: Script, req: Request, seed: int, roles: dict | None = None,
+                part: Departure | None = None) -> tuple[list[np.ndarray], dict]:
         """The two people's joints and the composition report for a script (deterministic
-        for the seed; up to ATTEMPTS draws, the first plausible one kept, else the best)."""
-        frames = int(round(req.seconds * FPS))
+        for the seed; up to ATTEMPTS draws, the first plausible one kept, else the best); with
+        `part`, the interaction ends at its frame and who leaves leaves (`after.py`)."""
+        total = int(round(req.seconds * FPS))
+        frames = part.frame if part is not None else total
         rng = np.random.default_rng([seed % 2**63, KINDS.index(script.kind)])
         contact = script.kind in CONTACT or script.held
         best: tuple | None = None
@@ -156,7 +163,13 @@ class InteractionGenerator:
             cast = Cast(rng, self.library, script, frames, _texts(req.prompt, roles),
                         solo=lambda text, s: self._solo(text, req.seconds, s))
             try:
-                people = finish(BUILDERS[script.kind](cast))
+                made = BUILDERS[script.kind](cast)
+                if part is not None:
+                    made, after = depart(finish(made), part, self._solo_of(req), seed, total, self._stand)
+                    for person, src in enumerate(after):
+                        for clip in src:
+                            cast.source(person, clip, "after")
+                people = finish(made)
             except ValueError as exc:
                 errors.append(str(exc))
                 continue
@@ -175,9 +188,18 @@ class InteractionGenerator:
             "skeleton": f"both people on the SMPL template's bones (forearm {FOREARM_M} m)",
             "people": [{"text": t, "clips": s} for t, s in zip(cast.texts, cast.sources)],
             "timing": cast.report, "draw": attempt + 1,
+            **({"after": part.to_json()} if part is not None else {}),
             "plausibility": {"failed": failed, "contact_asked": contact},
         })
         return [p.astype(np.float32) for p in people], composition
+
+    def _stand(self, frames: int, seed: int) -> tuple[np.ndarray, list[dict]]:
+        """Quiet standing for `frames` (a real standing run of the library) and its clip."""
+        clip = moves.standing(np.random.default_rng(seed), self.library.pool, frames)
+        return clip.joints, [clip.source]
+
+    def _solo_of(self, req: Request):
+        return lambda text, seconds, s: self._solo(text, seconds, s)
 
     def _solo(self, text: str, seconds: float, seed: int) -> tuple[np.ndarray, list[dict]]:
         """One person's motion for `text` by the generator that serves one person, and the
@@ -205,7 +227,7 @@ class InteractionGenerator:
             return self._frames[key]
         s = Script(script["kind"], int(script["actor"]), bool(script["approach"]),
                    bool(script["held"]), tuple(script.get("reasons", ())), script.get("part"))
-        people, _ = self.compose(s, req, plan.seed, _roles(plan))
+        people, _ = self.compose(s, req, plan.seed, _roles(plan), departure(plan.segments, s.kind))
         self._remember(req, plan.seed, script, people)
         return people
 

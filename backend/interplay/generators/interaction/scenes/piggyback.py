@@ -24,10 +24,10 @@ import numpy as np
 from interplay.catalogue.words import Phrases
 from interplay.generators.interaction import contacts as ct
 from interplay.generators.interaction import moves as mv
-from interplay.generators.interaction import travel
 from interplay.generators.interaction.bodies import turn_to
-from interplay.generators.interaction.partners import lean
 from interplay.generators.interaction.scene import Cast
+from interplay.generators.interaction.scenes import travel
+from interplay.generators.interaction.scenes.partners import lean
 from interplay.motion import skeleton as sk
 from interplay.motion.checks.measures import HAND_RADIUS_M
 from interplay.motion.ik import ease, two_bone_ik

@@ -17,8 +17,8 @@ from interplay.catalogue.grammar import words_rx
 from interplay.generators.interaction import contacts as ct
 from interplay.generators.interaction import moves as mv
 from interplay.generators.interaction.bodies import facing_pair, on_shared, turn_to, yaw_of
-from interplay.generators.interaction.gestures import _timed
 from interplay.generators.interaction.scene import Cast, clear, standing_pair
+from interplay.generators.interaction.scenes.gestures import _timed
 from interplay.generators.interaction.timing import Beat
 from interplay.motion import skeleton as sk
 from interplay.motion.checks.measures import HAND_RADIUS_M

@@ -17,8 +17,8 @@ import numpy as np
 
 from interplay.generators.interaction import moves as mv
 from interplay.generators.interaction.bodies import facing_pair, on_shared, turn_to
-from interplay.generators.interaction.gestures import _timed
 from interplay.generators.interaction.scene import Cast, clear
+from interplay.generators.interaction.scenes.gestures import _timed
 from interplay.motion import skeleton as sk
 from interplay.motion.checks import measures as m
 from interplay.motion.checks.named import events
