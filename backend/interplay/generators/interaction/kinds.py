@@ -4,7 +4,9 @@ catalogue's `interaction` entries, `actions.toml`, in file order: the first whos
 in the prompt), else from the MiniLM text encoder (the nearest of the entries' descriptions,
 when it is near enough and not nearer a prompt this generator leaves to another, such as
 dancing); the planner's per-person roles, when a segment carries them, say who does what.
-Every decision comes with its reason, for the plan.
+Every decision comes with its reason, for the plan. The words it looks for besides the
+entries' own are actions.toml's `[words.lists]` (`interaction_*`, `one_stops_subject`,
+`first_named`, `first_responds_<kind>`, `touch_part_<part>`).
 
     script = read_script("one pushes the other, who stumbles backwards", roles, encoder)
     script.kind, script.actor, script.reasons     # "push", 0, ("'push' in the prompt: …", …)
@@ -28,34 +30,15 @@ CONTACT = ("handshake", "high_five", "hug", "push", "help_up", "hand_over", "tou
            "lead")  # they touch
 APPROACHABLE = ("handshake", "high_five", "hug", "approach")
 
-# Words that look like a kind's but are not it ("push-ups"), taken out before the kinds' words.
-_LOOK_ALIKE = ("push up*", "pushup*")
-# "Two people jump together", but not a couple's dance: one motion of two people.
-_NOT_TOGETHER = ("danc*", "salsa", "tango", "waltz*", "wrestl*")
-# Prompts this generator leaves to another (checked before the encoder's guess).
-_NOT_MINE = ("push up*", "pushup*", "danc*", "leader", "follower", "twirl*", "salsa", "tango",
-             "waltz*", "jump*")
-# The subject of "one stops": the stop counts after one of these, in the same sentence.
-_ONE = ("one", "the other", "one of them", "one person")
-# What the encoder's nearest description may be instead: prompts left to another generator.
-_OTHERS = ("two people dance together", "two people sit down",
-           "two people salute each other", "two people exercise", "two people clap")
 MIN_SIMILARITY = 0.6
 # What the one who starts it does, as the reasons say it.
 _VERB = {"push": "pushes", "wave_back": "waves first", "follow": "leads", "one_stops": "stops",
          "mirror": "leads (the other mirrors)", "help_up": "helps", "hand_over": "hands it over",
          "touch": "touches", "chase": "chases", "spar": "strikes first", "carry": "carries",
          "lead": "leads"}
-# Prompts whose first-named person is the one who responds ("one person follows the other").
-_FIRST = ("one", "a", "the first")
-_FIRST_RESPONDS = {"follow": ("follow", "follows", "trail", "trails"),
-                   "mirror": ("copy", "copies", "mirror", "mirrors", "imitate", "imitates", "mimic", "mimics")}
 # Kinds whose prompt may name the response first ("the man runs away while the woman chases
 # him", "she takes a cup from him"): the first-named person is then the one who responds.
 _RESPONSE_FIRST = ("help_up", "hand_over", "touch", "chase", "carry", "lead")
-# A touched part's words ("on the shoulder", "her arm"), for the parts of the touch entry.
-_PART_WORDS = {"shoulder": ("shoulder*",), "back": ("back",), "arm": ("arm", "arms", "elbow*", "wrist*", "forearm*"),
-               "head": ("head", "hair", "forehead", "cheek"), "hand": ("hand", "hands", "palm")}
 
 
 @dataclass(frozen=True)
@@ -127,6 +110,11 @@ def _listed(name: str) -> tuple[str, ...]:
     return tuple(catalogue().words.lists.get(name, ()))
 
 
+def _touch_parts() -> tuple[str, ...]:
+    """The parts with words of their own (`touch_part_<part>`), in file order."""
+    return tuple(n.removeprefix("touch_part_") for n in catalogue().words.lists if n.startswith("touch_part_"))
+
+
 def _approach() -> tuple[str, ...]:
     """"walks towards each other", "approaches": they walk up to each other first."""
     return tuple(f"{v} {to}" for v in _listed("approach_moves") for to in _listed("approach_to")) \
@@ -141,7 +129,7 @@ def _match(words, text: str, not_before=()) -> str | None:
 def _one_stops(text: str, e: _Entry) -> str | None:
     """The stop word after "one" / "the other" … in the same sentence."""
     for sentence in text.split("."):
-        one = words_rx(_ONE).search(sentence)
+        one = words_rx(_listed("one_stops_subject")).search(sentence)
         if one:
             stop = words_rx(e.words, e.not_before).search(sentence, one.end())
             if stop:
@@ -151,19 +139,19 @@ def _one_stops(text: str, e: _Entry) -> str | None:
 
 def keyword_kind(prompt: str) -> tuple[str | None, str]:
     """(kind, reason) by keywords, or (None, why not)."""
-    text = words_rx(_LOOK_ALIKE).sub(" ", prompt)
+    text = words_rx(_listed("interaction_look_alike")).sub(" ", prompt)
     for e in entries():
         word = _one_stops(text, e) if e.kind == "one_stops" else _match(e.words, text, e.not_before)
-        if word and not (e.kind == "together" and _match(_NOT_TOGETHER, prompt)):
+        if word and not (e.kind == "together" and _match(_listed("interaction_not_together"), prompt)):
             return e.kind, f"'{word}' in the prompt: {e.kind}"
-    word = _match(_NOT_MINE, prompt)
+    word = _match(_listed("interaction_not_mine"), prompt)
     if word:
         return None, f"'{word}' in the prompt: not an interaction this generator composes"
     return None, "no interaction keyword in the prompt"
 
 
 def _prototypes() -> list[tuple[str | None, str]]:
-    return [(e.kind, d) for e in entries() for d in e.descriptions] + [(None, d) for d in _OTHERS]
+    return [(e.kind, d) for e in entries() for d in e.descriptions] + [(None, d) for d in _listed("interaction_others")]
 
 
 def encoder_kind(prompt: str, encoder) -> tuple[str | None, str]:
@@ -208,7 +196,7 @@ def _first_responds(kind: str, prompt: str) -> bool:
     w = words_of(prompt)
     if w[:2] == ["the", "first"]:
         w = w[2:]
-    elif w[:1] and w[0] in _FIRST:
+    elif w[:1] and w[0] in _listed("first_named"):
         w = w[1:]
     else:
         return False
@@ -216,7 +204,7 @@ def _first_responds(kind: str, prompt: str) -> bool:
         w = w[1:]
     elif w[:2] == ["of", "them"]:
         w = w[2:]
-    return bool(w) and w[0] in _FIRST_RESPONDS.get(kind, ())
+    return bool(w) and w[0] in _listed(f"first_responds_{kind}")
 
 
 def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
@@ -233,7 +221,7 @@ def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
         if score[0] != score[1]:
             who = int(np.argmax(score))
             return who, f"roles: person {who} {verb} ('{texts[who]}'; the other: '{texts[1 - who]}')"
-    if kind in _FIRST_RESPONDS and _first_responds(kind, prompt):
+    if _first_responds(kind, prompt):
         return 1, f"person 1 {verb} (the prompt's first-named one responds)"
     if kind in _RESPONSE_FIRST:
         said = [words_rx(responder[kind]).search(prompt), words_rx(actor[kind]).search(prompt)]
@@ -245,10 +233,10 @@ def _actor(kind: str, prompt: str, roles: dict | None) -> tuple[int, str]:
 def touched_part(prompt: str) -> tuple[str, str]:
     """(part, reason): the partner's part a touch goes to, the first the prompt names of the
     touch entry's parts (shoulder by default)."""
-    parts = next((e.parts for e in entries() if e.kind == "touch"), ()) or tuple(_PART_WORDS)
+    parts = next((e.parts for e in entries() if e.kind == "touch"), ()) or _touch_parts()
     found = []
     for p in parts:
-        m = words_rx(_PART_WORDS.get(p, (p,))).search(prompt)
+        m = words_rx(_listed(f"touch_part_{p}") or (p,)).search(prompt)
         if m:
             found.append((m.start(), p, m.group(0)))
     if not found:
@@ -265,7 +253,7 @@ def read_script(prompt: str, roles: dict | None = None, encoder=None) -> Script 
     kind, why = keyword_kind(prompt)
     reasons = [why]
     guessed = None
-    if kind is None and encoder is not None and not _match(_NOT_MINE, prompt):
+    if kind is None and encoder is not None and not _match(_listed("interaction_not_mine"), prompt):
         kind, why, guessed = _encoder_read(prompt, encoder)
         reasons.append(why)
     if kind is None:
@@ -292,7 +280,7 @@ def fallback(prompt: str, encoder) -> Script | None:
     dance, a jump, push-ups: the entries' `not mine` words; the nearest description one left
     to another): each does their own part of the words, facing the other (`face_to_face`),
     read as the weakest guess (its cosine to the nearest description)."""
-    if _match(_NOT_MINE, prompt):
+    if _match(_listed("interaction_not_mine"), prompt):
         return None
     kind, why, sim = _encoder_read(prompt, encoder)
     if kind is not None or _left_to_other(prompt, encoder):
@@ -312,6 +300,6 @@ def kind_checks(kind: str) -> list[dict]:
 def why_not(prompt: str, encoder=None) -> str:
     """Why `read_script` found no interaction in a prompt."""
     kind, why = keyword_kind(prompt)
-    if kind is None and encoder is not None and not _match(_NOT_MINE, prompt):
+    if kind is None and encoder is not None and not _match(_listed("interaction_not_mine"), prompt):
         return f"{why}; {encoder_kind(prompt, encoder)[1]}"
     return why
