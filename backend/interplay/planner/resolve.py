@@ -24,23 +24,23 @@ from interplay.planner.schema import Coverage
 from interplay.planner.verbs import VERBS, doing_nouns, is_verb, lookup, noun_verb
 
 SIMILARITY = 0.7      # cosine above which an unknown clause takes the nearest known phrase
-_FILLER = {"a", "an", "the", "it", "up", "down", "some", "something", "again", "too", "also"}
-# The words after a subject noun with no article that make it a verb with its object ("fan
-# yourself", "fan the flames") rather than a subject ("fan cheers").
-# Words that open a clause without being its verb ("slowly", "with both arms", "the end").
-_NOT_A_VERB = {"with", "without", "while", "slowly", "quickly", "then", "and", "but", "so", "very",
-               "again", "still", "there", "here", "now", "this", "that", "these", "those", "all"}
-_OBJECT_NEXT = {"yourself", "himself", "herself", "themselves", "oneself", "the", "a", "an", "his",
-                "her", "their", "your", "my", "it", "me", "him", "them", "us"}
+# Its words are actions.toml's [words.lists]: `filler` (no motion in them), `not_a_verb` (open a
+# clause without being its verb), `object_next` (after a subject noun: a verb with its object),
+# `not_motion` (a state).
+
+
+def _listed(name: str) -> list[str]:
+    return catalogue().words.lists[name]
 
 
 def _without_subject(words: list[str]) -> list[str]:
     """The words after a subject the decomposer left on ("a man drags …" → "drags …")."""
     i = 0
-    while i < len(words) and (words[i] in _FILLER or words[i] in SUBJECT_NOUNS or
+    filler, object_next = _listed("filler"), _listed("object_next")
+    while i < len(words) and (words[i] in filler or words[i] in SUBJECT_NOUNS or
                               words[i] in ("two", "one", "he", "she", "they", "someone")):
-        if words[i] in SUBJECT_NOUNS and (i == 0 or words[i - 1] not in _FILLER) and \
-                i + 1 < len(words) and words[i + 1] in _OBJECT_NEXT:
+        if words[i] in SUBJECT_NOUNS and (i == 0 or words[i - 1] not in filler) and \
+                i + 1 < len(words) and words[i + 1] in object_next:
             break                    # a verb with its object ("fan yourself"), not a subject
         if words[i] == "one" and words[i + 1:i + 3] in (["of", "them"], ["of", "us"]):
             i += 2                   # "one of them storms off"
@@ -57,7 +57,7 @@ def _unknown_verb(words: list[str]) -> bool:
         return False
     head = words[0]
     states = set(catalogue().words.lists.get("not_motion", ()))
-    if head in states or head in _NOT_A_VERB or not head.isalpha():
+    if head in states or head in _listed("not_a_verb") or not head.isalpha():
         return False
     # "juggles", "juggling", and a bare form: a clause said as an instruction ("wave, then sip
     # a hot coffee") or after a plural subject ("they sip …"); the subject is gone by here
@@ -79,7 +79,7 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
     """A clause the decomposer did not understand: the nearest vocabulary phrase when close
     enough; None when the clause has no motion at all (it is dropped)."""
     words = "".join(c if c in _WORD_CHARS else " " for c in action.text).split()     # runs of a-z and -
-    if all(is_verb(w, ("light",)) or w in _FILLER for w in words):
+    if all(is_verb(w, ("light",)) or w in _listed("filler") for w in words):
         reasons.append(f"dropped '{clause}': no motion in it")       # "gets (tired)"
         return None
     if vocab is not None:

@@ -24,17 +24,12 @@ from interplay.catalogue import grammar as g
 from interplay.catalogue.grammar import COUNT_SAID
 from interplay.catalogue.load import counted_once
 from interplay.catalogue.phrases import Found, unquoted
+from interplay.catalogue.words import lists
 from interplay.catalogue.words import words as listed
 from interplay.planner.verbs import doing_nouns, gerund, lookup, noun_verb, third
 
 NUMBERS = {"once": 1, "one": 1, "twice": 2, "two": 2, "thrice": 3, "three": 3, "four": 4,
            "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10}
-PRONOUNS = {"he", "she", "they", "it", "someone", "somebody", "one", "both", "i", "we", "you",
-            "everyone", "each"}
-DETS = {"the", "a", "an", "this", "that", "his", "her", "their", "my", "our", "two", "one",
-        "another", "each", "both"}
-PART_WORDS = {"left", "right", "arm", "arms", "hand", "hands", "leg", "legs", "foot", "feet",
-              "fist", "fists", "knee", "knees", "elbow", "elbows", "head", "body", "other"}
 
 
 @dataclass
@@ -163,11 +158,11 @@ def starts_action(text: str) -> bool:
     if not words:
         return False
     i, plural = 0, False
-    if words[0] in PRONOUNS:
+    if words[0] in lists()["clause_pronouns"]:
         i, plural = 1, words[0] in ("they", "both", "we", "you", "i")
-    elif words[0] in DETS:
+    elif words[0] in lists()["clause_determiners"]:
         for j in range(1, min(4, len(words))):
-            if words[j] in PART_WORDS or words[j] in ("to", "of", "with", "in", "on"):
+            if words[j] in lists()["clause_not_subject"] or words[j] in ("to", "of", "with", "in", "on"):
                 return False
             if lookup(words[j]):
                 i, plural = j, words[0] == "two" or words[j - 1].endswith("s")

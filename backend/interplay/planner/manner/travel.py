@@ -15,28 +15,21 @@ forward and moves backwards; `untangle` drops a straight path that only restates
 
 from __future__ import annotations
 
-from interplay.catalogue.words import tokens, words
+from interplay.catalogue.words import lists, tokens, words
 from interplay.planner.schema import TrajectorySpec, Travel
 from interplay.planner.verbs import Verb
 
-# Whole-body verbs that move the body somewhere (a jump forward, a stumble backwards).
-MOVING = {"jump", "leap", "stumble", "step", "lunge", "slide", "dodge", "roll", "fall", "topple",
-          "trip", "stagger"}
-# Verbs whose "to the left" is a step sideways, not a turn and a walk that way.
-LATERAL = {"step", "shuffle", "hop", "jump", "leap", "slide", "dodge", "lunge", "skip"}
-
-
-_SIDES = {"left", "leftward", "leftwards", "right", "rightward", "rightwards"}
-
-# "back" after these (and one space) is the body's ("lies on his back"), not a way to go
-_OWNERS = ("the", "their", "his", "her", "its", "your")
+# The words it reads are words.toml's: `travel_moving` (whole-body verbs that travel as well),
+# `travel_lateral` (verbs whose "to the left" is a step sideways), `travel_sides`, and
+# `back_owners` ("on his back" is the body's).
 
 
 def _backward(text: str) -> bool:
     """Does the (lower-case) text say to go backwards (words.toml's `travel_back`)?"""
     for found in words("travel_back").finditer(text):
         before = text[:found.start]
-        if not (found.text == "back" and before[-1:].isspace() and before[:-1].endswith(_OWNERS)):
+        owned = before[:-1].endswith(tuple(lists()["back_owners"]))
+        if not (found.text == "back" and before[-1:].isspace() and owned):
             return True
     return False
 
@@ -44,13 +37,13 @@ def _backward(text: str) -> bool:
 def direction(text: str, verb: Verb | None) -> Travel | None:
     """The direction of travel a clause states for its body, or None (not stated, or a body
     that does not travel)."""
-    if verb is None or not (verb.kind == "travel" or verb.base in MOVING):
+    if verb is None or not (verb.kind == "travel" or verb.base in lists()["travel_moving"]):
         return None
     t = text.lower()
     if _backward(t):
         return "backward"
-    side = next((w.text for w in tokens(t) if w.text in _SIDES), None)     # "to the left", "leftwards"
-    if side and (words("sideways").search(t) or verb.base in LATERAL):
+    side = next((w.text for w in tokens(t) if w.text in lists()["travel_sides"]), None)     # "to the left", "leftwards"
+    if side and (words("sideways").search(t) or verb.base in lists()["travel_lateral"]):
         return "left" if side.startswith("left") else "right"
     if words("sideways").search(t):
         return "left"            # "steps sideways", side unsaid: one side, said in `reasons`
