@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.phrases import Found, one_space, tokens
+from interplay.catalogue.words import lists
 from interplay.catalogue.words import words as listed
 from interplay.planner.manner.holds import held, keep
 from interplay.planner.verbs import VERBS, Verb, doing_nouns, lookup, third
@@ -24,7 +25,6 @@ ARM_WORDS = {"arm", "hand", "fist", "elbow", "wrist", "finger", "palm", "shoulde
              "thumb"}
 LEG_WORDS = {"leg", "foot", "knee", "toe", "heel", "ankle", "thigh", "shin"}
 _PLURAL = {"feet": "foot"}
-_BOTH_HANDED = {"clap", "cross", "rub", "shrug", "catch", "shake"}   # no per-side rewrite
 POSTURE_BASE = {"standing": "a person stands", "sitting": "a person sits on the floor",
                 "lying": "a person lies on the floor", "squatting": "a person squats",
                 "kneeling": "a person kneels", "crawling": "a person kneels on all fours"}
@@ -301,7 +301,7 @@ def _default_limb(v: Verb, words: str) -> tuple[list[str], str]:
 def _both_handed(text: str) -> bool:
     """Instructions both arms do together (clap, cross the arms, press the palms together)."""
     hit = lookup(text.split(" ", 1)[0])
-    return bool(hit and hit[0].base in _BOTH_HANDED) or " together" in text
+    return bool(hit and hit[0].base in lists()["both_handed_verbs"]) or " together" in text
 
 
 def _as_third(phrase: str) -> str:

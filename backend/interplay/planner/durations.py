@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from interplay.catalogue import grammar as g
-from interplay.catalogue.words import tokens, words
+from interplay.catalogue.words import lists, tokens, words
 from interplay.motion.skeleton import FPS
 from interplay.planner.schema import TrajectorySpec
 from interplay.planner.trajectory_text import path_length
@@ -41,9 +41,8 @@ LEAST = {"sprint": 2.5, "run": 2.0, "jog": 2.0, "walk": 2.0, "march": 2.0, "stro
          "kneel": 1.5, "crouch": 1.2, "fall": 1.2, "stumble": 1.2, "stagger": 1.2, "wave": 1.5,
          "kick": 1.0, "punch": 0.6, "clap": 0.6, "bow": 1.5, "spin": 1.2, "turn": 1.2,
          "stop": 1.5, "push": 1.0, "pull": 1.0, "hug": 2.0, "dance": 2.0, "cartwheel": 1.5}
-# Actions that can go on for longer than they need: the spare time of a clip is theirs.
-ELASTIC = {"wave", "dance", "wait", "stay", "pose", "balance", "hold", "stand", "stop", "clap",
-           "sway", "march", "stretch", "shake", "look", "hug", "rest", "flex", "circle"}
+# Actions that can go on for longer than they need (the spare time of a clip is theirs):
+# words.toml's `elastic_verbs`.
 # A partner turned under a raised arm (a couple's spin): captured salsa followers take
 # 1.5–2.5 s for one, more than a spin on one's own
 PARTNER_SPIN_S = 2.5
@@ -113,7 +112,7 @@ def need(verb: Verb | None, trajectory: TrajectorySpec | None = None, repeat: in
         reps = 1 if _counted_by_path(verb, trajectory) else repeat
         least = min(want, per * reps)
     transition = verb.base == "stand" and any(w.text == "up" for w in tokens(text))      # "stands up" ends
-    elastic = hold or (verb.kind == "travel" and not bounded) or (verb.base in ELASTIC
+    elastic = hold or (verb.kind == "travel" and not bounded) or (verb.base in lists()["elastic_verbs"]
                                                                   and not transition)
     return Need(want, max(MIN_SECONDS, min(least, want)), elastic)
 

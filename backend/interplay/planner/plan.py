@@ -24,7 +24,7 @@ import math
 from interplay.catalogue import grammar as g
 from interplay.catalogue.load import counted_once
 from interplay.catalogue.phrases import tokens, unquoted
-from interplay.catalogue.words import words
+from interplay.catalogue.words import lists, words
 from interplay.planner import lexicon, questions, temporal
 from interplay.planner.context import strip_context
 from interplay.planner.decompose import POSTURE_BASE, Action, decompose, plain, split_subject
@@ -47,8 +47,8 @@ IDLE = {**POSTURE_BASE, "standing": "a person stands still"}
 # A clause of one person doing something to the other: its subject, and the partner after it.
 ONE_SUBJECT, FIRST_SUBJECT, OTHER_PERSON = words("pair_one"), words("pair_first"), words("pair_other")
 MUTUAL = words("pair_mutual")          # "… each other": both act
-# Postures a step can stay in ("kneels on one knee and stays there"); part verbs hold poses.
-_POSED = {"kneel", "squat", "crouch", "sit", "lie", "stand", "pose", "balance", "lean", "bend"}
+# Postures a step can stay in ("kneels on one knee and stays there"): words.toml's
+# `posed_verbs`; part verbs hold poses.
 
 
 def _without_subject(text: str) -> str:
@@ -77,7 +77,7 @@ def _fold_holds(clauses: list[temporal.Clause], reasons: list[str]) -> list[temp
     for c in clauses:
         if out and continues_hold(c.text):
             verb = decompose(out[-1].text).verb
-            if verb is not None and (verb.kind == "part" or verb.base in _POSED):
+            if verb is not None and (verb.kind == "part" or verb.base in lists()["posed_verbs"]):
                 out[-1].hold = c.text
                 reasons.append(f"holds: '{c.text}' keeps the pose of '{out[-1].text}' to its end")
                 continue

@@ -26,7 +26,7 @@ from typing import Literal
 
 from interplay.catalogue import grammar as g
 from interplay.catalogue.phrases import one_space
-from interplay.catalogue.words import words
+from interplay.catalogue.words import lists, words
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose
 from interplay.planner.manner.travel import direction
 from interplay.planner.pair.actors import FIRST, ONE, SECOND, person
@@ -38,8 +38,7 @@ Response = Literal["with", "after", "contact"]
 # partner as an object, a clause's subject, "…, and the other …") is grammar.py's.
 NOUNS = tuple(sorted(SUBJECT_NOUNS | {"partner", "friend", "follower", "leader"}))
 _ROLES = g.two_people(NOUNS)
-_CONTACT = {"push", "shove", "pull", "punch", "hit", "slap", "kick", "tackle", "bump", "poke",
-            "touch", "grab", "tap", "nudge"}
+# verbs the partner answers on contact: words.toml's `contact_verbs`
 
 # Verbs done to the partner whose answer is known: (lead's words, partner's words, response).
 # "{rest}" is what followed the partner ("around the room"); lead 1 means the partner leads.
@@ -124,7 +123,7 @@ def exchange(text: str, names: dict) -> Exchange | None:
     if who and _ROLES.partner.search(who.group("head")):
         head, (answer, _) = who.group("head"), _answer(who.group("answer"))
         verb = _verb(head)
-        response: Response = "contact" if verb in _CONTACT else "after"
+        response: Response = "contact" if verb in lists()["contact_verbs"] else "after"
         return Exchange(first, {first: _partner_words(head), 1 - first: answer}, response,
                         f"roles: '{text}' → {first} {head}, then {1 - first} {answer} "
                         f"({'from the contact' if response == 'contact' else 'after it'})")

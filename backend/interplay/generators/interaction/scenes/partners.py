@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from interplay.catalogue.grammar import words_rx
+from interplay.catalogue.load import catalogue
 from interplay.generators.interaction import contacts as ct
 from interplay.generators.interaction import moves as mv
 from interplay.generators.interaction.bodies import facing_pair, on_shared, turn_to, yaw_of
@@ -36,7 +37,6 @@ UPPER = [J[n] for n in ("spine1", "spine2", "spine3", "neck", "head", "left_coll
 PARTS = ("shoulder", "back", "arm", "head", "hand")
 PULL_BACK_DEG = 12.0        # the helper leans back this far as the other rises
 TOUCH_M = {"head": (0.5, 0.56), "hand": (0.6, 0.7)}   # facing, pelvis to pelvis (else 0.6–0.7 m)
-PATS = ("pat", "pats", "patted", "patting", "tap", "taps", "tapped", "tapping")
 PAT_M, PAT_HZ = 0.03, 2.5   # a pat lifts the hand this far off, this often (it stays within 5 cm)
 DEPTH_CM = 2.5              # a touch deeper into the other's body is drawn again (bound: 3 cm)
 
@@ -218,7 +218,8 @@ def touch(c: Cast) -> list[np.ndarray]:
         d, o = _take_hand(d, o, hand, bt.weights(frames), float(rng.uniform(0.0, 0.08)))
     else:
         goal, normal = _touch_point(d, o, part, hand)
-        if words_rx(PATS).search(c.texts[doer]):     # a pat or a tap: the hand lifts off and back
+        pats = tuple(catalogue().words.lists["touch_pats"])
+        if words_rx(pats).search(c.texts[doer]):     # a pat or a tap: the hand lifts off and back
             t = (np.arange(frames) - bt.start) / sk.FPS
             inside = (np.arange(frames) >= bt.start) & (np.arange(frames) < bt.end)
             goal = goal + (PAT_M * 0.5 * (1.0 - np.cos(2 * np.pi * PAT_HZ * t)) * inside)[:, None] * normal
