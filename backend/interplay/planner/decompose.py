@@ -21,16 +21,13 @@ from interplay.catalogue.words import words as listed
 from interplay.planner.manner.holds import held, keep
 from interplay.planner.verbs import VERBS, Verb, doing_nouns, lookup, third
 
-ARM_WORDS = {"arm", "hand", "fist", "elbow", "wrist", "finger", "palm", "shoulder", "forearm",
-             "thumb"}
-LEG_WORDS = {"leg", "foot", "knee", "toe", "heel", "ankle", "thigh", "shin"}
+ARM_WORDS = frozenset(lists()["arm_words"])      # words.toml
+LEG_WORDS = frozenset(lists()["leg_words"])
 _PLURAL = {"feet": "foot"}
 POSTURE_BASE = {"standing": "a person stands", "sitting": "a person sits on the floor",
                 "lying": "a person lies on the floor", "squatting": "a person squats",
                 "kneeling": "a person kneels", "crawling": "a person kneels on all fours"}
-SUBJECT_NOUNS = {"person", "man", "woman", "boy", "girl", "child", "kid", "lady", "guy", "dancer",
-                 "player", "people", "men", "women", "figure", "someone", "somebody", "athlete",
-                 "footballer", "midfielder", "cowboy", "mime", "fan", "manager", "soldier"}
+SUBJECT_NOUNS = frozenset(lists()["subject_nouns"])   # a person as a clause's subject
 PARTS = ("left_arm", "right_arm", "left_leg", "right_leg")
 
 
