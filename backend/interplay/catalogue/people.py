@@ -95,7 +95,8 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
         return prompt
     swaps, seen = [], 0
     for start, end, pair in named:
-        tail = tokens[end - 1][-1] if tokens[end - 1][-1:] in _PUNCT else ""
+        last = tokens[end - 1].rstrip(_PUNCT)
+        tail = ("'s" if last.lower().endswith("'s") else "") + tokens[end - 1][len(last):]
         noun = _bare(tokens[end - 1])
         if noun in keep:
             seen = 2 if pair else seen + 1
@@ -148,4 +149,5 @@ def _named_first(tokens: list[str], found: list, encoder) -> bool:
 
 
 def _bare(word: str) -> str:
-    return word.lower().strip(_PUNCT)
+    """The word as read: lower case, without punctuation or a possessive ("woman's": woman)."""
+    return word.lower().strip(_PUNCT).removesuffix("'s")

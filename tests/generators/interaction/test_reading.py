@@ -40,3 +40,11 @@ def test_a_dance_stays_with_the_generator_it_was_left_to():
     enc = get_encoder()
     for prompt in ("the leader spins the follower", "a salsa couple, the lead turns his partner under his arm"):
         assert read(prompt, None, enc) is None
+
+
+@pytest.mark.parametrize("prompt", ["two people grab each other's hands", "a man holds a woman's hand",
+                                    "lovers stroll hand in hand on the beach", "they walk with their hands joined"])
+def test_hands_held_said_many_ways_are_held(prompt):
+    """Not a touch ('grab*', 'hand on the beach') nor a hand-over: the two walk holding hands."""
+    script = read(prompt, None, get_encoder())
+    assert script is not None and script.kind == "side_by_side" and script.held, script
