@@ -84,3 +84,25 @@ def test_without_tries_a_miss_is_reported_not_passed(gen):
 def test_the_checks_an_interaction_asks_for(gen, prompt, checks):
     plan = gen.plan(Request(prompt, 2, 6.0, 0))
     assert [s["check"] for s in interaction_specs(plan)] == checks
+
+
+@pytest.fixture(scope="module")
+def router():
+    return load_generator()            # the product default: two people composed
+
+
+def test_each_persons_own_words_are_checked_where_the_roles_are_their_own(router):
+    """After the interaction (who leaves) a person's role is read as one person's words are: backing
+    away asks travel backwards of them; the kind's own parts (a push's stumble, a couple's spin)
+    are left to the kind's checks."""
+    from interplay.pipeline.pair_review import role_specs
+    plan = router.plan(Request("they hug, then one walks away backwards", 2, 8.0, 0))
+    specs = role_specs(plan)
+    assert specs and all(s["check"] == "travel_direction" and s["direction"] == "backward" for _, s in specs)
+    assert all(a == plan.composition["after"]["frame"] for (a, _), _ in specs)
+    for prompt in ("one pushes the other, who stumbles backwards", "the leader spins the follower",
+                   "two people shake hands"):
+        assert role_specs(router.plan(Request(prompt, 2, 6.0, 0))) == []
+    out, _ = _run(router, "they hug, then one walks away backwards", seconds=8.0)
+    assert out.review["interaction"]["of"] == 1 + len(specs)
+    assert out.review["interaction"]["passed"] == out.review["interaction"]["of"]

@@ -28,6 +28,7 @@ from interplay.generators.plan import GenerationPlan
 from interplay.generators.retrieval.couple import asks_spin
 from interplay.generators.retrieval.intent import intent
 from interplay.generators.retrieval.verify import COUNT_CHECKS
+from interplay.generators.retrieval.verify import checks as asked_checks
 from interplay.motion.pair.resolve import pair_bounds
 from interplay.pipeline import pair_pass
 from interplay.review import asked
@@ -87,15 +88,58 @@ def _bounds_ok(people: np.ndarray, plan: GenerationPlan) -> bool:
                for s in plan.segments if s.end - s.start >= 2 and s.end <= people.shape[1])
 
 
+# A person's role read as one person's words are (`retrieval.intent`, `verify.checks`), and
+# the checks of that reading kept for the two: where they go, what they count, kick or punch,
+# how they turn, whether they stay. Postures and speeds are the composed kind's to decide.
+ROLE_CHECKS = ("travel_direction", "kick", "punch", "jump_count", "squat_count", "step_count",
+               "turn", "stays_in_place")
+
+
+def role_specs(plan: GenerationPlan) -> list[tuple[tuple[int, int], dict]]:
+    """((start, end) frames, spec with its `person`) for what each person's role asks on its own
+    ("a person walks away": travel forward; "squats three times": three squats) in the segments
+    where their roles are their own (each to their own part face to face; after the
+    interaction), beside the interaction's checks: the kind may pass while a person's part of
+    the words is missing, and the verdict must not say `ok` then."""
+    comp = plan.composition or {}
+    kind = (comp.get("script") or {}).get("kind")
+    # the roles are the kind's own parts (a push and its stumble, a handshake) except where
+    # each does their own part (face to face) and after the interaction (who leaves)
+    start = 0 if kind == "face_to_face" else int((comp.get("after") or {}).get("frame", -1))
+    if plan.persons != 2 or start < 0:
+        return []
+    idle = words("compose_idle", ignore_case=True)
+    out = []
+    for seg in [s for s in plan.segments if s.start >= start]:
+        for key, role in (seg.roles or {}).items():
+            person, text = int(key), str(role or "").strip().rstrip(".")
+            if person not in seg.persons or not text or idle.whole(text):
+                continue
+            it = intent(text, seg.repeat)
+            out += [((seg.start, seg.end), {**spec, "person": person})
+                    for spec in asked_checks(it, None, None) if spec["check"] in ROLE_CHECKS]
+    return out
+
+
+def _missed(plan: GenerationPlan, specs: list[dict], people: np.ndarray) -> list[tuple[str, str]]:
+    """The interaction's checks missed on the whole motion, then each role's on its segment."""
+    out = asked.missed(list(people), specs)
+    for (a, b), spec in role_specs(plan):
+        if b <= people.shape[1]:
+            out += [(name, f"person {spec['person']}: {why}") for name, why in
+                    asked.missed([p[a:b] for p in people], [spec])]
+    return out
+
+
 def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray
            ) -> tuple[dict, int]:
     """The review event of one round and how many of the checks passed (run once each)."""
-    missed = asked.missed(list(people), specs)
+    missed = _missed(plan, specs, people)
     failed = {f"asked_{name}": why for name, why in missed}
     instructions = [{"kind": "regenerate", "prompt": plan.prompt,
                      "reason": "the two do not do what was asked: "
                                + "; ".join(w for _, w in missed)}] if missed else []
-    n = len(specs)
+    n = len(specs) + len(role_specs(plan))
     checks: dict = {"failed": failed, "windows": [], "metrics": {}}
     guess = ((plan.composition or {}).get("script") or {}).get("guessed")
     verdict = "correct" if missed else "ok"
@@ -134,7 +178,7 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
     rounds, corrections = [event], []
     rng = np.random.default_rng([plan.seed % 2**63, 15])
     for k in range(tries):
-        if best == len(specs):
+        if not rounds[-1]["instructions"]:          # nothing missed (the roles' checks too)
             break
         seed = int(rng.integers(2**31))
         instr = rounds[-1]["instructions"][0]
@@ -167,7 +211,7 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
                                     else "over the penetration bound")
             corrections.append(correction)
             emit(correction)
-    if best < len(specs):       # what the tries could not fix ends failed, never "correct"
+    if rounds[-1]["instructions"]:       # what the tries could not fix ends failed, never "correct"
         last = rounds[-1]
         final = {**last, "round": max(last["round"], *(c["round"] for c in corrections)) + 1
                  if corrections else last["round"] + 1,
@@ -177,4 +221,4 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
         emit(final)
         rounds.append(final)
     return people, plan, {"checks": specs, "rounds": rounds, "corrections": corrections,
-                          "passed": best, "of": len(specs)}
+                          "passed": best, "of": len(specs) + len(role_specs(plan))}

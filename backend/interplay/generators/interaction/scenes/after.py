@@ -22,6 +22,7 @@ import numpy as np
 
 from interplay.catalogue.words import words
 from interplay.generators.interaction.bodies import yaw_of
+from interplay.generators.retrieval.intent import intent
 from interplay.motion import skeleton as sk
 from interplay.motion.ik import ease
 from interplay.motion.kinematics import facing_angle
@@ -131,6 +132,8 @@ def depart(people: list[np.ndarray], part: Departure, solo: Solo, seed: int,
             away = (end[sk.PELVIS] - ends[1 - person][sk.PELVIS])[[0, 2]]
             if np.linalg.norm(away) > 1e-6:
                 yaw = float(np.arctan2(away[0], away[1]))
+            if intent(role).travel == "backward":      # backing away: facing the other
+                yaw += np.pi
         placed = _placed(more, end, yaw)
         head = _turned(joints, placed[0]) if leaves else _eased(joints, placed)
         out.append(np.concatenate([head, placed]))
