@@ -116,8 +116,8 @@ def _kind_contact(text: str) -> str:
     near enough (MiniLM cosine ≥ KIND_SIMILARITY, the interaction generator's own bound):
     "two friends bump fists" is a high five, so "hands"; else "none"."""
     from interplay.catalogue.load import catalogue
-    from interplay.text.encoder import get_encoder
     from interplay.catalogue.people import neutral
+    from interplay.text.encoder import get_encoder
     entries = [(a.contact, d) for a in catalogue().of_kind("interaction") for d in a.descriptions]
     if not entries or not text.strip():
         return "none"
