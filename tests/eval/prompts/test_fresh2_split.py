@@ -6,15 +6,16 @@ line and the report take the split."""
 from __future__ import annotations
 
 import collections
-import inspect
 import json
 
-import numpy as np
-
-from interplay.eval.prompts.report import build_report, format_table
-from interplay.eval.prompts.suite import FRESH, FRESH2, SPLITS, category_labels, load_split, load_suite
-from interplay.motion.checks.named import CHECKS, run_check
-from interplay.motion.clip import default_clips
+from interplay.eval.prompts.suite import FRESH, FRESH2, SPLITS, load_split, load_suite
+from interplay.motion.checks.named import CHECKS
+from tests.helpers.blind_splits import (
+    assert_checks_and_parameters_exist,
+    assert_checks_run_on_a_capture,
+    assert_command_line_reads,
+    assert_report_names_categories,
+)
 
 
 def fresh2():
@@ -54,47 +55,16 @@ def test_ids_and_prompts_are_unique_and_new():
 
 
 def test_every_check_and_parameter_exists():
-    for p in fresh2():
-        assert 1 <= len(p.checks) <= 3, p.id
-        for spec in p.checks:
-            params = dict(spec)
-            name = params.pop("check")
-            assert name in CHECKS, (p.id, name)
-            check = CHECKS[name]
-            assert not check.base, (p.id, name)
-            assert check.persons <= p.persons, (p.id, name)
-            # one-person checks take (BodyFrame, …), two-person (a, b, fa, fb, …)
-            sig = list(inspect.signature(check.fn).parameters.values())[1 if check.persons == 1 else 4:]
-            known = {x.name for x in sig}
-            if check.persons == 1:
-                who = params.pop("person", None)
-                assert who in (None, 0, 1, "any", "both") and (who is None or p.persons == 2), (p.id, name)
-            assert set(params) <= known, (p.id, name, set(params) - known)
+    assert_checks_and_parameters_exist(fresh2())
 
 
 def test_every_check_runs_on_a_capture():
-    walk = next(c for c in default_clips() if c.label == "walk").people[0]
-    for p in fresh2():
-        people = [walk, walk + np.array([1.0, 0, 0])] if p.persons == 2 else [walk]
-        for spec in p.checks:
-            r = run_check(people, spec)
-            assert isinstance(r.passed, bool) and r.bound, (p.id, spec)
-            json.dumps(r.to_json())
+    assert_checks_run_on_a_capture(fresh2())
 
 
 def test_the_command_line_reads_the_split(capsys):
-    from interplay.cli.main import build_parser, main
-    assert main(["eval-prompts", "--split", "fresh2", "--ids", "no-such-id"]) == 2
-    assert "no prompts in split 'fresh2' with ids no-such-id" in capsys.readouterr().err
-    args = build_parser().parse_args(["review-eval", "--honesty", "--split", "fresh2"])
-    assert args.split == "fresh2"
+    assert_command_line_reads("fresh2", capsys)
 
 
 def test_the_report_names_its_categories():
-    ps = fresh2()
-    report = build_report([], {}, ps, [], "fresh2", 1, 0.0)
-    assert report["categories"]["everyday"] == sum(p.persons == 1 for p in ps)
-    assert report["categories"]["two_person"] == sum(p.persons == 2 for p in ps)
-    text = format_table(report)
-    assert category_labels("fresh2")["everyday"] in text and "(dev)" not in text
-    assert category_labels("dev")["everyday"] != category_labels("fresh2")["everyday"]
+    assert_report_names_categories(fresh2(), "fresh2")
