@@ -165,7 +165,7 @@ class InteractionGenerator:
             try:
                 made = BUILDERS[script.kind](cast)
                 if part is not None:
-                    made, after = depart(finish(made), part, self._solo_of(req), seed, total, self._stand)
+                    made, after = depart(finish(made), part, self._solo, seed, total, self._stand)
                     for person, src in enumerate(after):
                         for clip in src:
                             cast.source(person, clip, "after")
@@ -197,9 +197,6 @@ class InteractionGenerator:
         """Quiet standing for `frames` (a real standing run of the library) and its clip."""
         clip = moves.standing(np.random.default_rng(seed), self.library.pool, frames)
         return clip.joints, [clip.source]
-
-    def _solo_of(self, req: Request):
-        return lambda text, seconds, s: self._solo(text, seconds, s)
 
     def _solo(self, text: str, seconds: float, seed: int) -> tuple[np.ndarray, list[dict]]:
         """One person's motion for `text` by the generator that serves one person, and the

@@ -49,6 +49,7 @@ class Departure:
     frame: int                     # where the interaction ends and the leaving starts
     roles: tuple[str, str]         # each person's role from there (STAY for who stays)
     leaves: tuple[bool, bool]      # who leaves
+    segment: int = 0               # the plan's segment in which someone leaves
 
     def to_json(self) -> dict:
         return {"frame": self.frame, "roles": list(self.roles), "leaves": list(self.leaves)}
@@ -60,7 +61,7 @@ def departure(segments, kind: str) -> Departure | None:
     if kind in WALKING or len(segments) < 2:
         return None
     leaving = words("depart", ignore_case=True)
-    for seg in segments[1:]:
+    for k, seg in enumerate(segments[1:], 1):
         roles = seg.roles or {}
         said = [str(roles.get(k) or "") for k in ("0", "1")]
         leaves = tuple(bool(t) and leaving.search(t) is not None for t in said)
@@ -70,7 +71,7 @@ def departure(segments, kind: str) -> Departure | None:
                 return None
             roles_out = tuple(t if t and (left or not _stays(t)) else STAY for t, left in zip(said, leaves))
             frame = max(int(seg.start), min(total - MIN_AFTER, INTERACTION))
-            return Departure(frame, (roles_out[0], roles_out[1]), (leaves[0], leaves[1]))
+            return Departure(frame, (roles_out[0], roles_out[1]), (leaves[0], leaves[1]), k)
     return None
 
 
@@ -88,9 +89,7 @@ def retimed(plan, part: Departure):
     (those before it scaled into [0, frame), the rest into [frame, end)); the plan itself when
     it starts there already."""
     segs = plan.segments
-    k = next(i for i, s in enumerate(segs) if s.roles and any(
-        words("depart", ignore_case=True).search(str(r or "")) for r in s.roles.values()) and i > 0)
-    cut, total = segs[k].start, segs[-1].end
+    cut, total = segs[part.segment].start, segs[-1].end
     if cut == part.frame:
         return plan
 
@@ -111,9 +110,9 @@ def depart(people: list[np.ndarray], part: Departure, solo: Solo, seed: int,
            total: int, stand: Stand) -> tuple[list[np.ndarray], list[list[dict]]]:
     """Both people (frames [0, part.frame) each) continued to `total` frames: each leaver by
     their role turned away from the other, the other by theirs where they stand; and the
-    clips each continuation is made of (`stand`: a standing run for who only stays). A leaver turns in the interaction's last JOIN frames,
-    so that their leaving starts facing the way it goes (a path laid on it from there, "in a
-    circle", starts along their walk, not across it)."""
+    clips each continuation is made of (`stand`: a standing run for who only stays). A leaver
+    turns in the interaction's last JOIN frames, so that their leaving starts facing the way it
+    goes (a path laid on it from there, "in a circle", starts along their walk, not across it)."""
     rest = total - part.frame
     ends = [p[-1] for p in people]
     out, sources = [], []
@@ -135,8 +134,7 @@ def depart(people: list[np.ndarray], part: Departure, solo: Solo, seed: int,
             if intent(role).travel == "backward":      # backing away: facing the other
                 yaw += np.pi
         placed = _placed(more, end, yaw)
-        head = _turned(joints, placed[0]) if leaves else _eased(joints, placed)
-        out.append(np.concatenate([head, placed]))
+        out.append(np.concatenate([_turned(joints, placed[0]), placed]))
         sources.append(src)
     return out, sources
 
@@ -156,7 +154,8 @@ def _local(pose: np.ndarray) -> tuple[np.ndarray, float]:
 
 def _turned(joints: np.ndarray, goal: np.ndarray) -> np.ndarray:
     """The interaction's frames with their last JOIN turned round into `goal` (22, 3): each
-    pose blended in its own facing, the facing turned the shorter way, the pelvis moved."""
+    pose blended in its own facing, the facing turned the shorter way, the pelvis moved (who
+    stays blends into their staying role's first pose the same way, with next to no turn)."""
     out = joints.copy()
     n = min(JOIN, len(joints) - 1)
     goal_local, goal_yaw = _local(goal)
@@ -175,9 +174,3 @@ def _turned(joints: np.ndarray, goal: np.ndarray) -> np.ndarray:
 
 def _wrap(angle: float) -> float:
     return float((angle + np.pi) % (2 * np.pi) - np.pi)
-
-
-def _eased(joints: np.ndarray, placed: np.ndarray) -> np.ndarray:
-    """Who stays: the interaction's frames, their last JOIN blended into the staying role's
-    first pose (same facing: no turn)."""
-    return _turned(joints, placed[0])
