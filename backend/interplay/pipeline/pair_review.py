@@ -24,6 +24,7 @@ import numpy as np
 from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request
 from interplay.generators.interaction.kinds import kind_checks, read_script
+from interplay.generators.interaction.scene import idle_role
 from interplay.generators.plan import GenerationPlan
 from interplay.generators.retrieval.couple import asks_spin
 from interplay.generators.retrieval.intent import intent
@@ -108,12 +109,11 @@ def role_specs(plan: GenerationPlan) -> list[tuple[tuple[int, int], dict]]:
     start = 0 if kind == "face_to_face" else int((comp.get("after") or {}).get("frame", -1))
     if plan.persons != 2 or start < 0:
         return []
-    idle = words("compose_idle", ignore_case=True)
     out = []
     for seg in [s for s in plan.segments if s.start >= start]:
         for key, role in (seg.roles or {}).items():
             person, text = int(key), str(role or "").strip().rstrip(".")
-            if person not in seg.persons or not text or idle.whole(text):
+            if person not in seg.persons or not text or idle_role(text):
                 continue
             it = intent(text, seg.repeat)
             out += [((seg.start, seg.end), {**spec, "person": person})
@@ -121,10 +121,12 @@ def role_specs(plan: GenerationPlan) -> list[tuple[tuple[int, int], dict]]:
     return out
 
 
-def _missed(plan: GenerationPlan, specs: list[dict], people: np.ndarray) -> list[tuple[str, str]]:
-    """The interaction's checks missed on the whole motion, then each role's on its segment."""
+def _missed(specs: list[dict], roles: list[tuple[tuple[int, int], dict]], people: np.ndarray
+            ) -> list[tuple[str, str]]:
+    """The interaction's checks missed on the whole motion, then each role's (`role_specs`) on
+    its segment."""
     out = asked.missed(list(people), specs)
-    for (a, b), spec in role_specs(plan):
+    for (a, b), spec in roles:
         if b <= people.shape[1]:
             out += [(name, f"person {spec['person']}: {why}") for name, why in
                     asked.missed([p[a:b] for p in people], [spec])]
@@ -134,12 +136,13 @@ def _missed(plan: GenerationPlan, specs: list[dict], people: np.ndarray) -> list
 def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray
            ) -> tuple[dict, int]:
     """The review event of one round and how many of the checks passed (run once each)."""
-    missed = _missed(plan, specs, people)
+    roles = role_specs(plan)
+    missed = _missed(specs, roles, people)
     failed = {f"asked_{name}": why for name, why in missed}
     instructions = [{"kind": "regenerate", "prompt": plan.prompt,
                      "reason": "the two do not do what was asked: "
                                + "; ".join(w for _, w in missed)}] if missed else []
-    n = len(specs) + len(role_specs(plan))
+    n = len(specs) + len(roles)
     checks: dict = {"failed": failed, "windows": [], "metrics": {}}
     guess = ((plan.composition or {}).get("script") or {}).get("guessed")
     verdict = "correct" if missed else "ok"

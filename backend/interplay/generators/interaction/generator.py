@@ -23,14 +23,13 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from interplay.catalogue.words import words
 from interplay.generators.base import Generator, Request, generate_motion, random_seed
 from interplay.generators.interaction import moves
 from interplay.generators.interaction.bodies import SHARED
 from interplay.generators.interaction.kinds import CONTACT, KINDS, Script, why_not
 from interplay.generators.interaction.library import Library
 from interplay.generators.interaction.reading import read
-from interplay.generators.interaction.scene import Cast, finish
+from interplay.generators.interaction.scene import Cast, finish, idle_role
 from interplay.generators.interaction.scenes import contest, gestures, partners, piggyback, touches, travel
 from interplay.generators.interaction.scenes.after import Departure, depart, departure, retimed
 from interplay.generators.plan import GenerationPlan, Source
@@ -58,12 +57,6 @@ START = {"help_up": "any"}     # the one helped up starts on the floor
 FOREARM_M = round(float(np.linalg.norm(SHARED[JOINT_INDEX["left_wrist"]])), 3)
 
 
-def _idle(role: str) -> bool:
-    """A role that only waits: "a person stands still.", "waits there"."""
-    role = role.strip()
-    return words("compose_idle", ignore_case=True).whole(role[:-1] if role.endswith(".") else role)
-
-
 def plain(x):
     """A report made of numpy scalars and tuples as plain JSON values."""
     if isinstance(x, dict):
@@ -89,7 +82,7 @@ def _roles(plan) -> dict | None:
     out = {}
     for k in ("0", "1"):
         texts = list(dict.fromkeys(str(r[k]) for r in segs if r.get(k)))
-        busy = [t for t in texts if not _idle(t)]
+        busy = [t for t in texts if not idle_role(t)]
         if busy or texts:
             out[k] = "; then ".join(busy or texts[:1])
     return out or None

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from interplay.catalogue.words import words
 from interplay.generators.interaction import moves as mv
 from interplay.generators.interaction.bodies import ground, refit
 from interplay.generators.interaction.kinds import Script
@@ -21,6 +22,13 @@ from interplay.motion.checks.contact import riding
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.pair.placement import BODY_MARGIN, body_gap
 from interplay.motion.rotations import yaw_matrix
+
+
+def idle_role(role: str) -> bool:
+    """A role that only waits: "a person stands still.", "waits there" (the catalogue's
+    `compose_idle` words, the whole role)."""
+    role = role.strip()
+    return words("compose_idle", ignore_case=True).whole(role[:-1] if role.endswith(".") else role)
 
 
 @dataclass
