@@ -74,8 +74,9 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     pair named at once: "two kids", "a couple"), in order; everything else as written. The
     prompt itself when it already says "the other", or when it does not open with a person
     ("tiptoe past the sleeping baby", "walk in a straight line": an instruction, whose nouns
-    are read no further; MiniLM alone cannot tell "a hot | coffee" from "a waiter | hands"). People named by a noun in `keep` count in the order but stay as written ("the man hands a menu to a guest" → "the
-    man hands a menu to the other person")."""
+    are read no further; MiniLM alone cannot tell "a hot | coffee" from "a waiter | hands").
+    People named by a noun in `keep` count in the order but stay as written ("the man hands a
+    menu to a guest" → "the man hands a menu to the other person")."""
     tokens = prompt.split()
     if "the other" in prompt.lower():
         return prompt
