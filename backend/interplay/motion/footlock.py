@@ -169,15 +169,18 @@ def lock_feet(joints: np.ndarray, fps: float = sk.FPS, blend: int = 4, edge: int
     return apply_foot_corrections(joints, corr * ramp[:, None, None])
 
 
-def apply_foot_corrections(mapped: np.ndarray, corr: np.ndarray) -> np.ndarray:
+def apply_foot_corrections(mapped: np.ndarray, corr: np.ndarray,
+                           lift: np.ndarray | None = None) -> np.ndarray:
     """Mapped joints with each foot moved rigidly by corr (T, 2, 3: ankle XZ shift, yaw about
-    the ankle) by two-bone IK of the legs (hips fixed after a whole-body shift of at most
-    MAX_SHIFT where a leg cannot reach)."""
+    the ankle) and raised by `lift` (T, 2) metres where given, by two-bone IK of the legs (hips
+    fixed after a whole-body shift of at most MAX_SHIFT where a leg cannot reach)."""
     hip, knee, ankle, toe = (list(j) for j in zip(*LEGS))                       # (2,) each
     bone = lambda a, b: np.linalg.norm(mapped[:, a] - mapped[:, b], axis=-1)    # (T, 2)
     thigh, shin, foot = bone(knee, hip), bone(ankle, knee), bone(toe, ankle)
     goal_ankle = mapped[:, ankle].copy()                                         # (T, 2, 3)
     goal_ankle[..., [0, 2]] += corr[..., :2]
+    if lift is not None:
+        goal_ankle[..., 1] += lift
     goal_toe = goal_ankle + mapped[:, toe] - mapped[:, ankle]
     goal_toe[..., [0, 2]] = goal_ankle[..., [0, 2]] + _rotate(
         (mapped[:, toe] - mapped[:, ankle])[..., [0, 2]], corr[..., 2])

@@ -9,9 +9,11 @@ import numpy as np
 import pytest
 
 from interplay.generators.base import Request, generate_motion
-from interplay.generators.interaction.scenes.after import INTERACTION, departure
+from interplay.generators.interaction.scenes.after import INTERACTION, JOIN, departure
 from interplay.generators.router import load_generator
+from interplay.motion import skeleton as sk
 from interplay.motion.checks.named import plausibility, run_check
+from interplay.motion.metrics import foot_skating
 from interplay.planner.plan import plan
 
 
@@ -47,3 +49,26 @@ def test_they_do_it_then_part(router, prompt, kind, check):
         assert np.allclose(np.asarray(again.people), np.asarray(mo.people))    # made again alike
         segs = mo.plan["segments"]
         assert segs[1]["start"] == comp["after"]["frame"]                     # the timeline says so
+
+
+@pytest.mark.parametrize("prompt", [
+    "two people shake hands, then one walks away in a circle",
+    "they hug, then walk away from each other",
+])
+def test_the_turn_away_steps_instead_of_sliding(router, prompt):
+    """A leaver turns round in the interaction's last JOIN frames: each foot stays planted,
+    then steps (lifted) to where the walk starts it; before motion.stepping both feet swung
+    round the pelvis at up to 1.7 m/s on the ground (the reviewer's foot-skating window)."""
+    for seed in (0, 1):
+        mo = generate_motion(router.compose, Request(prompt, 2, 6.0, seed))
+        frame = mo.plan["composition"]["after"]["frame"]
+        for person, leaves in zip(mo.people, mo.plan["composition"]["after"]["leaves"]):
+            if not leaves:
+                continue
+            joints = np.asarray(person, np.float64)
+            speed, plant = foot_skating(joints)                 # frames 1 … T-2
+            turn = slice(frame - JOIN - 1, frame + 1)
+            slid = (plant & (speed > 0.5))[turn].any(axis=1)
+            assert not slid.any(), (seed, np.nonzero(slid)[0] + frame - JOIN)
+            lifted = joints[frame - JOIN:frame][:, [sk.LEFT_ANKLE, sk.RIGHT_ANKLE], 1]
+            assert (lifted.max(axis=0) - lifted.min(axis=0) > 0.03).all()    # both feet step

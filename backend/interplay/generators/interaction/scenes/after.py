@@ -10,7 +10,8 @@ the other stays where they are (their role, or standing still).
 
 The join turns a leaver round over JOIN frames about their own pelvis while their pose blends
 from the interaction's last frame into the walk's first (in each one's own facing, so a half
-turn does not pass the body through itself). numpy only.
+turn does not pass the body through itself), the feet stepping round, one after the other
+(motion.stepping), instead of swinging about the pelvis. numpy only.
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from interplay.motion.ik import ease
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import FPS
+from interplay.motion.stepping import stepped
 from interplay.planner.verbs import lookup
 
 # Kinds made of walking already (their own leaving is their words), and the kinds whose
@@ -134,7 +136,8 @@ def depart(people: list[np.ndarray], part: Departure, solo: Solo, seed: int,
             if intent(role).travel == "backward":      # backing away: facing the other
                 yaw += np.pi
         placed = _placed(more, end, yaw)
-        out.append(np.concatenate([_turned(joints, placed[0]), placed]))
+        n = min(JOIN, len(joints) - 1)
+        out.append(stepped(np.concatenate([_turned(joints, placed[0]), placed]), len(joints) - n, len(joints)))
         sources.append(src)
     return out, sources
 
