@@ -1,6 +1,6 @@
-"""What every blind prompt split (`fresh2`, `fresh3`) must hold, shared by their tests: each
-check and parameter it names exists and runs on a capture, and the command line and the report
-take the split."""
+"""What every blind prompt split (`fresh2`, `fresh3`, `fresh4`) must hold, shared by their
+tests: each check and parameter it names exists and runs on a capture, and the command line and
+the report take the split."""
 
 from __future__ import annotations
 

@@ -220,8 +220,9 @@ def register(sub) -> None:
                        "over seeds)")
     p.add_argument("--split", choices=SUITE_SPLITS, default="test",
                    help="dev: tune there; test: the benchmark (default); fresh: prompts in "
-                   "words the code has no table for, part edits among them; fresh2, fresh3: "
-                   "everyday prompts written blind (without seeing the studio's vocabulary)")
+                   "words the code has no table for, part edits among them; fresh2, fresh3, "
+                   "fresh4: everyday prompts written blind (without seeing the studio's "
+                   "vocabulary)")
     p.add_argument("--rows", help="comma-separated: retrieval,spam,coda,default (default all; "
                    "rows whose weights are missing are skipped)")
     p.add_argument("--seeds", type=int, default=3, help="seeds per prompt (default 3)")

@@ -20,6 +20,12 @@ The `fresh3` split (`eval/data/fresh3_prompts.json`, `load_split("fresh3")`): a 
 held-out set written the same way (30 one-person "everyday" prompts: chores, exercise, sports,
 gestures, emotions, work, play; 30 "two_person": greetings, helping, handing, playing, sports,
 dancing, comforting, arguing, chasing, teaching), its checks chosen before any output was seen.
+
+The `fresh4` split (`eval/data/fresh4_prompts.json`, `load_split("fresh4")`): a third blind
+held-out set written the same way (25 one-person "everyday" prompts: chores, work, sports,
+play, gestures, emotions; 35 "two_person": greetings, helping, guiding, carrying, handing,
+tickling, chasing, fleeing, shoving, sparring, teaching, dancing, consoling, play fighting),
+its checks chosen before any output was seen.
 """
 
 from __future__ import annotations
@@ -34,9 +40,10 @@ SUITE = Path(__file__).resolve().parents[1] / "data" / "prompts.json"
 FRESH = SUITE.with_name("fresh_prompts.json")
 FRESH2 = SUITE.with_name("fresh2_prompts.json")
 FRESH3 = SUITE.with_name("fresh3_prompts.json")
-SPLITS = ("dev", "test", "fresh", "fresh2", "fresh3")
+FRESH4 = SUITE.with_name("fresh4_prompts.json")
+SPLITS = ("dev", "test", "fresh", "fresh2", "fresh3", "fresh4")
 # The splits with a file of their own (every prompt there of that split); dev and test share SUITE.
-SPLIT_FILES: dict[str, Path] = {"fresh": FRESH, "fresh2": FRESH2, "fresh3": FRESH3}
+SPLIT_FILES: dict[str, Path] = {"fresh": FRESH, "fresh2": FRESH2, "fresh3": FRESH3, "fresh4": FRESH4}
 # Table order; the names as the table prints them.
 CATEGORIES: dict[str, str] = {
     "single": "single actions",
@@ -56,10 +63,11 @@ CATEGORIES: dict[str, str] = {
 # open-vocabulary path is tuned on them; the fresh split is its blind counterpart).
 FRESH_CATEGORIES: dict[str, str] = {"edits": "part edits", "everyday": "everyday words (dev)",
                                     "activities": "everyday activities (dev)"}
-# A category's name in one split's table where the shared one would mislead (fresh2's and
-# fresh3's "everyday" prompts are held out, not dev's tuning prompts).
+# A category's name in one split's table where the shared one would mislead (fresh2's,
+# fresh3's and fresh4's "everyday" prompts are held out, not dev's tuning prompts).
 SPLIT_LABELS: dict[str, dict[str, str]] = {"fresh2": {"everyday": "everyday (held out, blind)"},
-                                           "fresh3": {"everyday": "everyday (held out, blind)"}}
+                                           "fresh3": {"everyday": "everyday (held out, blind)"},
+                                           "fresh4": {"everyday": "everyday (held out, blind)"}}
 STARTS = ("standing", "any", "low", "lying", "sitting", "kneeling", "all_fours")
 
 
@@ -138,7 +146,7 @@ def select(prompts: list[Prompt], split: str | None = None, categories=None,
 
 def load_split(split: str, ids=None) -> list[Prompt]:
     """The prompts of one split (optionally only some ids): dev and test from the suite, fresh,
-    fresh2 and fresh3 from their own files (every prompt there must be of that split)."""
+    fresh2, fresh3 and fresh4 from their own files (every prompt there must be of that split)."""
     if split not in SPLITS:
         raise ValueError(f"split must be one of {SPLITS}, got {split!r}")
     path = SPLIT_FILES.get(split)
