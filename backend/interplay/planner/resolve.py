@@ -13,12 +13,14 @@ cosine; a clause kept as written is `nearest`: the studio shows the closest capt
     resolve(decompose("does a flying kick"), …)   → the jump kick (cosine 0.81)
     resolve(decompose("does the griddy"), …)      → "does the griddy", kept as written
     resolve(decompose("gets tired"), …)           → None (dropped: no motion in it)
+    resolve(decompose("hefts a bride …"), …)      → "lifts a bride …" (WordNet: heft is a kind of lift)
 """
 
 from __future__ import annotations
 
 from interplay.catalogue.grammar import COUNT_SAID, ONE_SAID
 from interplay.catalogue.load import catalogue
+from interplay.planner.broader import broader, primitive_near
 from interplay.planner.decompose import SUBJECT_NOUNS, Action, decompose, split_subject
 from interplay.planner.schema import Coverage
 from interplay.planner.verbs import VERBS, doing_nouns, is_verb, lookup, noun_verb
@@ -106,6 +108,9 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
                     new.text, new.base = f"{new.text} {count}", f"{new.base} {count}"
                     reasons.append(f"count: '{count}' kept after the nearest phrase")
                 return new
+    wider = _broader(action, posture, last_parts, reasons, vocab)
+    if wider is not None:
+        return wider
     if not any(lookup(w) or noun_verb(w) for w in words) and not _unknown_verb(words):
         reasons.append(f"dropped '{clause}': no motion in it")
         return None
@@ -114,6 +119,23 @@ def resolve(action: Action, clause: str, posture: str, last_parts, vocab, reason
     reasons.append(f"unknown motion '{action.text}': kept as written")
     action.base, action.verb = f"a person {action.text}", VERBS["pose"]
     return action
+
+
+def _broader(action: Action, posture: str, last_parts, reasons, vocab) -> Action | None:
+    """The clause with its unknown head verb read as the broader verb the catalogue knows
+    (planner/broader.py: "heft a bride …" → "lift a bride …"), when the decomposer then knows
+    it, unless a motion primitive makes the words as they are ("bang on a drum": drumming, not
+    a hit; `broader.primitive_near`, with the vocabulary's encoder when there is one)."""
+    rest = _without_subject(action.text.split())
+    hit = broader(rest[0]) if rest and _unknown_verb(rest) else None
+    if hit is None or (vocab is not None and primitive_near(" ".join(rest), vocab().encode)):
+        return None
+    new = decompose(" ".join([hit.word, *rest[1:]]), posture, last_parts)
+    if not new.known:
+        return None
+    new.subject = action.subject
+    reasons.append(f"vocabulary: {hit.reason()}")
+    return new
 
 
 def coverage_of(action: Action, named: list[tuple[str, str]] | None = None) -> Coverage:

@@ -10,6 +10,9 @@ neutral form ("one person hands a menu to the other person", `catalogue.people.n
 - "together" (any motion of two people at once, the weakest of the kinds the words name) yields
   to a description of another kind at least OVER_TOGETHER near ("two friends clink their
   glasses together": the toast, not two people doing the same thing);
+- a verb the catalogue lacks is read as the broader verb it knows (WordNet: "duel" → "fight",
+  `planner.broader`) when the words as written leave the kind to the encoder, nearer than
+  OVER_TOGETHER to none of its descriptions ("arm wrestle" stays the encoder's, at 0.87);
 - nothing read: `kinds.fallback` (each does their own part, facing the other), read first so
   that a prompt left to another generator (a dance) stays with it.
 
@@ -22,6 +25,7 @@ import dataclasses
 
 from interplay.catalogue.people import neutral
 from interplay.generators.interaction.kinds import Script, fallback, read_script
+from interplay.planner.broader import broadened
 
 # How near a description of another kind must be to take a prompt from "together" (the nearest
 # paraphrases of the entries' descriptions sit at 0.7–0.8; unrelated prompts ≤ 0.6).
@@ -57,9 +61,24 @@ def read(prompt: str, roles: dict | None, encoder) -> Script | None:
         if other is not None and _surer(script, other) is other:
             script = dataclasses.replace(other, reasons=other.reasons + (
                 f"read with the people named neutrally: '{plain}'",))
+    if (script.guessed is not None and script.guessed < OVER_TOGETHER) or script.kind == "together":
+        script = _broader(prompt, roles, encoder, script)
     if script.kind == "together":
         alone = _encoder_only(plain, roles, encoder)
         if alone is not None and alone.kind != "together" and (alone.guessed or 0) >= OVER_TOGETHER:
             script = dataclasses.replace(alone, reasons=script.reasons + alone.reasons + (
                 f"a {alone.kind} is nearer than two people doing the same thing together",))
     return script
+
+
+def _broader(prompt: str, roles: dict | None, encoder, script: Script) -> Script:
+    """The prompt read with each verb the catalogue lacks as the broader verb it knows
+    (`planner.broader`: "lob a beanbag to each other" → "throw …"), people named neutrally,
+    when that reading is the surer one; else `script`."""
+    wide, found = broadened(neutral(prompt, encoder))
+    if not found:
+        return script
+    other = read_script(wide, roles, encoder)
+    if other is None or _surer(script, other) is not other:
+        return script
+    return dataclasses.replace(other, reasons=other.reasons + tuple(b.reason() for b in found))
