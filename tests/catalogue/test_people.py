@@ -34,6 +34,11 @@ def test_people_nouns_read_as_people_and_other_words_not():
     ("a tired worker carries a heavy box", "one person carries a heavy box"),
     ("a nurse helps an old man walk down the hall", "one person helps the other person walk down the hall"),
     ("mom tucks her son into bed", "one person tucks the other person into bed"),
+    # a person named again is named as before
+    ("a coach throws a ball to a player, and the player catches it",
+     "one person throws a ball to the other person, and the other person catches it"),
+    ("a teacher claps and the student copies the teacher",
+     "one person claps and the other person copies the first person"),
 ])
 def test_a_prompt_names_its_people_neutrally(prompt, plain):
     assert neutral(prompt, get_encoder()) == plain

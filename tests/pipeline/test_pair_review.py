@@ -106,3 +106,19 @@ def test_each_persons_own_words_are_checked_where_the_roles_are_their_own(router
     out, _ = _run(router, "they hug, then one walks away backwards", seconds=8.0)
     assert out.review["interaction"]["of"] == 1 + len(specs)
     assert out.review["interaction"]["passed"] == out.review["interaction"]["of"]
+
+
+def test_who_copies_is_asked_the_leaders_part(router):
+    """One shows, the other copies: both are asked the leader's counted action ("demonstrates a
+    front kick": a kick each), and the plan gives the copier their own part (it copied nothing
+    while "the student copies it" stayed in the leader's role)."""
+    from interplay.pipeline.pair_review import role_specs
+    prompt = "a karate teacher demonstrates a front kick and the student copies it"
+    plan = router.plan(Request(prompt, 2, 7.0, 0))
+    assert plan.composition["script"]["kind"] == "mirror"
+    specs = role_specs(plan)
+    assert sorted(s["person"] for _, s in specs) == [0, 1] and all(s["check"] == "kick" for _, s in specs)
+    out, _ = _run(router, prompt, seconds=7.0)
+    assert out.review["interaction"]["of"] == 1 + len(specs)
+    people = [np.asarray(p, np.float64) for p in out.people]
+    assert run_check(people, {"check": "kick", "leg": "any", "at_least": 1, "person": "both"}).passed

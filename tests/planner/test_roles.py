@@ -144,3 +144,15 @@ def test_a_dance_follower_is_not_someone_who_follows():
     from interplay.generators.interaction.kinds import keyword_kind
     assert keyword_kind("the leader spins the follower")[0] is None
     assert keyword_kind("one person follows the other")[0] == "follow"
+
+
+def test_one_shows_and_the_other_copies_is_an_exchange():
+    """"… demonstrates a front kick and the student copies it": the copier's words are their own
+    role, with whatever verb the first one's words have; "helps the other stand up" is no copy."""
+    vocab = load_vocabulary(None)
+    plan = embedded_plan("a karate teacher demonstrates a front kick and the student copies it", 2, 7.0,
+                         lambda: vocab)
+    roles = plan.segments[0].roles
+    assert roles["0"] == "a person kicks" and roles["1"] == "a person copies it"
+    helped = embedded_plan("one friend helps the other stand up from the ground", 2, 6.0, lambda: vocab)
+    assert "copies" not in str(helped.segments[0].roles)

@@ -72,6 +72,8 @@ def _phrases(tokens: list[str]) -> list[tuple[int, int, list[int], bool]]:
 def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     """The prompt with its people named "one person" / "the other person" ("two people" for a
     pair named at once: "two kids", "a couple"), in order; everything else as written. The
+    A person named again is named as before ("… a client … and the client copies her" → "… the
+    other person … and the other person copies her"; the first one: "the first person"). The
     prompt itself when it already says "the other", or when it does not open with a person
     ("tiptoe past the sleeping baby", "walk in a straight line": an instruction, whose nouns
     are read no further; MiniLM alone cannot tell "a hot | coffee" from "a waiter | hands").
@@ -94,7 +96,7 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     named.sort()
     if not named or named[0][0] != 0:       # a prompt that opens with its people, or none
         return prompt
-    swaps, seen = [], 0
+    swaps, seen, who = [], 0, {}
     for start, end, pair in named:
         last = tokens[end - 1].rstrip(_PUNCT)
         tail = ("'s" if last.lower().endswith("'s") else "") + tokens[end - 1][len(last):]
@@ -104,8 +106,11 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
         elif pair:
             swaps.append((start, end, "two people" + tail))
             seen = 2
+        elif noun in who:            # named again ("… and the client copies her"): the same one
+            swaps.append((start, end, ("the first person", "the other person")[who[noun]] + tail))
         elif seen < 2:
             swaps.append((start, end, ("one person", "the other person")[seen] + tail))
+            who[noun] = seen
             seen += 1
     for start, end, text in reversed(swaps):
         tokens[start:end] = [text]

@@ -60,20 +60,25 @@ def interaction_specs(plan: GenerationPlan) -> list[dict]:
     if kind == "together":
         roles = {str(k): v for k, v in (plan.segments[0].roles or {}).items()}
         text = roles.get("0") or plan.segments[0].prompt
-        it = intent(text, plan.segments[0].repeat)
-        n = {"count": it.count} if it.count is not None else {"at_least": 1}
-        if it.action in COUNT_CHECKS:
-            return [{"check": COUNT_CHECKS[it.action], **n, "person": "both"}]
-        if it.action in ("kick", "punch"):
-            key = "leg" if it.action == "kick" else "hand"
-            return [{"check": it.action, key: it.side or "any", **n, "person": "both"}]
-        return []
+        return [{**spec, "person": "both"} for spec in _counted(intent(text, plan.segments[0].repeat))]
     out = [dict(s) for s in kind_checks(kind)]        # the catalogue entry's checks
     if held:
         out.insert(0, {"check": "hands_held"})
     if approach and kind != "approach":
         out.insert(0, {"check": "approach"})
     return out
+
+
+def _counted(it) -> list[dict]:
+    """The count check of a counted action a person's words name ("squats": squat_count; "kicks":
+    kick), the count said or at least one; [] for other words."""
+    n = {"count": it.count} if it.count is not None else {"at_least": 1}
+    if it.action in COUNT_CHECKS:
+        return [{"check": COUNT_CHECKS[it.action], **n}]
+    if it.action in ("kick", "punch"):
+        key = "leg" if it.action == "kick" else "hand"
+        return [{"check": it.action, key: it.side or "any", **n}]
+    return []
 
 
 # An interaction the words do not name but the text encoder read from its nearest description
@@ -100,24 +105,34 @@ def role_specs(plan: GenerationPlan) -> list[tuple[tuple[int, int], dict]]:
     """((start, end) frames, spec with its `person`) for what each person's role asks on its own
     ("a person walks away": travel forward; "squats three times": three squats) in the segments
     where their roles are their own (each to their own part face to face; after the
-    interaction), beside the interaction's checks: the kind may pass while a person's part of
+    interaction; both doing the leader's part where one copies the other), beside the
+    interaction's checks: the kind may pass while a person's part of
     the words is missing, and the verdict must not say `ok` then."""
     comp = plan.composition or {}
-    kind = (comp.get("script") or {}).get("kind")
+    script = comp.get("script") or {}
+    kind = script.get("kind")
     # the roles are the kind's own parts (a push and its stumble, a handshake) except where
-    # each does their own part (face to face) and after the interaction (who leaves)
-    start = 0 if kind == "face_to_face" else int((comp.get("after") or {}).get("frame", -1))
+    # each does their own part (face to face), after the interaction (who leaves), and where
+    # one copies the other (mirror: the leader's part is asked of both)
+    own = kind in ("face_to_face", "mirror")
+    start = 0 if own else int((comp.get("after") or {}).get("frame", -1))
     if plan.persons != 2 or start < 0:
         return []
+    leader = str(script.get("actor", 0))
     out = []
     for seg in [s for s in plan.segments if s.start >= start]:
-        for key, role in (seg.roles or {}).items():
+        roles = seg.roles or {}
+        for key, role in roles.items():
             person, text = int(key), str(role or "").strip().rstrip(".")
-            if person not in seg.persons or not text or idle_role(text):
+            if kind == "mirror":                        # the copier does the leader's part
+                text = str(roles.get(leader) or "").strip().rstrip(".")
+            if (kind != "mirror" and person not in seg.persons) or not text or idle_role(text):
                 continue
             it = intent(text, seg.repeat)
-            out += [((seg.start, seg.end), {**spec, "person": person})
-                    for spec in asked_checks(it, None, None) if spec["check"] in ROLE_CHECKS]
+            specs = [spec for spec in asked_checks(it, None, None) if spec["check"] in ROLE_CHECKS]
+            # a counted action with no count said is asked at least once ("demonstrates a kick")
+            specs += [c for c in _counted(it) if c["check"] not in {x["check"] for x in specs}]
+            out += [((seg.start, seg.end), {**spec, "person": person}) for spec in specs]
     return out
 
 

@@ -100,6 +100,16 @@ def _who(subject: str, names: dict) -> int:
     return person(s, names)
 
 
+def _copied(rest: str) -> bool:
+    """Does the clause go on with the other copying ("… demonstrates a kick and the other person
+    copies it": the mirror's answer, whatever the first one's verb)?"""
+    coord = _ROLES.coordinated.match(rest)
+    if coord is None or coord.group("answer").split(" ", 1)[0] not in lists()["copy_verbs"]:
+        return False
+    joint = rest[coord.end("head"):coord.start("answer")].replace(",", " ").split()
+    return bool(set(joint) & set(lists()["coordinating"]))      # not "helps the other stand up"
+
+
 def exchange(text: str, names: dict) -> Exchange | None:
     """The exchange a clause describes (see the module docstring), or None."""
     t = words("take_turns").sub(text, lambda found: f"{found.text.split()[-1]} in turn")
@@ -112,7 +122,8 @@ def exchange(text: str, names: dict) -> Exchange | None:
         return Exchange(0, {0: rest, 1: rest}, "after", f"roles: '{text}' → one after the other")
     m = _ROLES.subject.match(t)
     if m is None or words("each_other").search(t) or not (lookup(m.group("rest").split(" ", 1)[0])
-                                                or g.COPIES_THE_OTHER.match(m.group("rest"))):
+                                                or g.COPIES_THE_OTHER.match(m.group("rest"))
+                                                or _copied(m.group("rest"))):
         return None                  # both do it ("… wave at each other"), or no verb follows
     subject, rest = m.group("subj"), m.group("rest")
     first = _who(subject, names)
@@ -128,7 +139,7 @@ def exchange(text: str, names: dict) -> Exchange | None:
                         f"roles: '{text}' → {first} {head}, then {1 - first} {answer} "
                         f"({'from the contact' if response == 'contact' else 'after it'})")
     coord = _ROLES.coordinated.match(rest)
-    if coord and lookup(coord.group("answer").split(" ", 1)[0]):
+    if coord and (lookup(coord.group("answer").split(" ", 1)[0]) or _copied(rest)):
         head = coord.group("head")
         answer, answers = _answer(coord.group("answer"))
         simultaneous = (coord.group("word") or "").strip() in ("while", "as", "whereas")
