@@ -96,7 +96,8 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     named.sort()
     if not named or named[0][0] != 0:       # a prompt that opens with its people, or none
         return prompt
-    swaps, seen, who = [], 0, {}
+    swaps, seen = [], 0
+    who: dict[str, int] = {}                      # a named person's noun → 0 or 1
     for start, end, pair in named:
         last = tokens[end - 1].rstrip(_PUNCT)
         tail = ("'s" if last.lower().endswith("'s") else "") + tokens[end - 1][len(last):]
