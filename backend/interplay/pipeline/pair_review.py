@@ -121,7 +121,7 @@ def role_specs(plan: GenerationPlan) -> list[tuple[tuple[int, int], dict]]:
     leader = str(script.get("actor", 0))
     out = []
     for seg in [s for s in plan.segments if s.start >= start]:
-        roles: dict[str, str | None] = dict(seg.roles or {})
+        roles: dict[str, str] = {str(k): v for k, v in (seg.roles or {}).items()}
         for key, role in roles.items():
             person, text = int(key), str(role or "").strip().rstrip(".")
             if kind == "mirror":                        # the copier does the leader's part
