@@ -50,3 +50,20 @@ def test_a_prompt_already_neutral_or_without_people_is_kept():
                    "jump over the fence", "wave, then sip a hot coffee", "pick up a big box and carry it away",
                    "sidestep to the right and then back to the left", "give each other a high five"):
         assert neutral(prompt, enc) == prompt
+
+
+@pytest.mark.parametrize("prompt, plain", [
+    ("hand your coworker a stapler", "one person hands the other person a stapler"),
+    ("flee from a bully", "one person flees from the other person"),
+    ("deliver a parcel to a neighbour", "one person delivers a parcel to the other person"),
+    # no person surely named, a likeness, a gerund's description: kept as written
+    ("iron a shirt", "iron a shirt"),
+    ("waddle like a toddler", "waddle like a toddler"),
+    ("sitting at a desk typing on a computer", "sitting at a desk typing on a computer"),
+    ("wave, then sip a hot coffee", "wave, then sip a hot coffee"),
+])
+def test_an_instruction_to_do_something_to_someone_names_its_doer(prompt, plain):
+    from interplay.planner.verbs import third
+    assert neutral(prompt, get_encoder(), third=third) == plain
+    assert neutral(prompt, get_encoder()) == prompt          # without a verb's forms: as written
+

@@ -7,6 +7,7 @@ a few descriptions (people.toml), not a list of nouns.
 
     neutral("a father lifts his daughter onto his shoulders", encoder)
       → "one person lifts the other person onto his shoulders"
+    neutral("tickle a buddy", encoder, third=third) → "one person tickles the other person"
 """
 
 from __future__ import annotations
@@ -69,7 +70,33 @@ def _phrases(tokens: list[str]) -> list[tuple[int, int, list[int], bool]]:
     return out
 
 
-def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
+def _instruction(tokens: list[str], named: list[tuple[int, int, bool]], margin: dict, third
+                 ) -> str | None:
+    """An instruction to do something to one person ("tickle a buddy", "flee from a bully",
+    "deliver a parcel to a neighbour") in neutral words, its doer the one told: "one person
+    tickles the other person". Only where that person is surely one (`sure_margin`: the nouns
+    of an instruction's things sit near the plain margin: "iron a shirt" 0.009, "an armchair"
+    0.056; "a neighbour" 0.066, "a buddy" 0.14) and is who the verb is done to: its object,
+    after particles only ("from", "away") or after "to"; not in a likeness ("walk like a
+    toddler"), nor after a gerund ("sitting at a desk" describes, it does not tell). None else."""
+    t = table()
+    first = _bare(tokens[0])
+    if len(named) != 1 or named[0][2] or not first.isalpha() or first.endswith("ing") \
+            or first in t["determiners"] or first in t["stops"] or first in t["alone"]:
+        return None
+    start, end, _ = named[0]
+    between = [_bare(w) for w in tokens[1:start]]
+    if margin.get(_bare(tokens[end - 1]), 0.0) < t["sure_margin"] or \
+            not (all(w in t["stops"] for w in between) or between[-1:] == ["to"]) or \
+            set(between) & set(t["likeness"]):
+        return None
+    last = tokens[end - 1].rstrip(_PUNCT)
+    tail = ("'s" if last.lower().endswith("'s") else "") + tokens[end - 1][len(last):]
+    out = tokens[:start] + ["the other person" + tail] + tokens[end:]
+    return " ".join(["one person", third(first)] + out[1:])
+
+
+def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset(), third=None) -> str:
     """The prompt with its people named "one person" / "the other person" ("two people" for a
     pair named at once: "two kids", "a couple"), in order; everything else as written. The
     A person named again is named as before ("… a client … and the client copies her" → "… the
@@ -78,7 +105,9 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
     ("tiptoe past the sleeping baby", "walk in a straight line": an instruction, whose nouns
     are read no further; MiniLM alone cannot tell "a hot | coffee" from "a waiter | hands").
     People named by a noun in `keep` count in the order but stay as written ("the man hands a
-    menu to a guest" → "the man hands a menu to the other person")."""
+    menu to a guest" → "the man hands a menu to the other person"). With `third` (a verb's
+    third person: "tickle" → "tickles"), an instruction to do something to one person is read
+    with its doer ("tickle a buddy" → "one person tickles the other person")."""
     tokens = prompt.split()
     if "the other" in prompt.lower():
         return prompt
@@ -94,6 +123,8 @@ def neutral(prompt: str, encoder, keep: frozenset[str] = frozenset()) -> str:
         if at is not None:
             named.append((start, at + 1, pair or _bare(tokens[at]) in t["pair_nouns"]))
     named.sort()
+    if named and named[0][0] != 0 and third is not None:
+        return _instruction(tokens, named, margin, third) or prompt
     if not named or named[0][0] != 0:       # a prompt that opens with its people, or none
         return prompt
     swaps, seen = [], 0

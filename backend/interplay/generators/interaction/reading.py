@@ -26,6 +26,7 @@ import dataclasses
 from interplay.catalogue.people import neutral
 from interplay.generators.interaction.kinds import Script, fallback, read_script
 from interplay.planner.broader import broadened
+from interplay.planner.verbs import third
 
 # How near a description of another kind must be to take a prompt from "together" (the nearest
 # paraphrases of the entries' descriptions sit at 0.7–0.8; unrelated prompts ≤ 0.6).
@@ -55,7 +56,7 @@ def read(prompt: str, roles: dict | None, encoder) -> Script | None:
     script = read_script(prompt, roles, encoder) or fallback(prompt, encoder)
     if script is None or encoder is None:
         return script
-    plain = neutral(prompt, encoder)
+    plain = neutral(prompt, encoder, third=third)
     if plain != prompt and (script.guessed is not None or script.kind == "together"):
         other = read_script(plain, roles, encoder)
         if other is not None and _surer(script, other) is other:
@@ -75,7 +76,7 @@ def _broader(prompt: str, roles: dict | None, encoder, script: Script) -> Script
     """The prompt read with each verb the catalogue lacks as the broader verb it knows
     (`planner.broader`: "lob a beanbag to each other" → "throw …"), people named neutrally,
     when that reading is the surer one; else `script`."""
-    wide, found = broadened(neutral(prompt, encoder))
+    wide, found = broadened(neutral(prompt, encoder, third=third))
     if not found:
         return script
     other = read_script(wide, roles, encoder)

@@ -7,21 +7,23 @@ the pair grammar finds who does what:
     plain_people("a waiter hands a menu to a guest", encoder)
       → "one person hands a menu to the other person"
     plain_people("two coworkers argue loudly", encoder) → "two people argue loudly"
+    plain_people("tickle a buddy", encoder) → "one person tickles the other person"
 """
 
 from __future__ import annotations
 
 from interplay.catalogue.people import neutral
 from interplay.planner.pair.roles import NOUNS
+from interplay.planner.verbs import third
 
 KNOWN = frozenset(NOUNS)
 
 
 def plain_people(text: str, encoder) -> tuple[str, list[str]]:
     """(text, reasons): the text with the people the planner does not know named neutrally."""
-    if neutral(text, encoder, keep=KNOWN) == text:       # every person named is one it knows
+    if neutral(text, encoder, keep=KNOWN, third=third) == text:   # every person named is one it knows
         return text, []
-    out = neutral(text, encoder)
+    out = neutral(text, encoder, third=third)
     if out == text:
         return text, []
     return out, [f"people: '{text}' read as '{out}' (the people named by role)"]
