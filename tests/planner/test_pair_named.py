@@ -5,7 +5,9 @@ action and the other a stand-by; people it knows by name are planned as before."
 
 from __future__ import annotations
 
-from interplay.planner.plan import plan
+from interplay.planner.plan import embedded_plan, plan
+from interplay.planner.vocabulary import load_vocabulary
+from interplay.text.encoder import get_encoder
 
 
 def _roles(prompt: str) -> list[tuple[str, dict]]:
@@ -39,3 +41,16 @@ def test_people_the_planner_knows_are_planned_as_before():
                    # instructions: their nouns are things, not people ("iron a shirt", "do a squat")
                    "iron a shirt", "do a squat", "step sideways to the left", "tiptoe past the sleeping baby"):
         assert not any(r.startswith("people:") for r in plan(prompt, 2, 6.0).reasons)
+
+
+def test_one_person_named_by_role_is_a_person():
+    """"a toddler wobbles across the rug": the words after the toddler are their motion (they
+    were kept with the noun, "a person toddler wobbles …"); a bare first word is no person."""
+    from interplay.planner.pair.named import plain_person
+    enc = get_encoder()
+    assert plain_person("a toddler wobbles across the rug", enc)[0] == "a person wobbles across the rug"
+    assert plain_person("a tired hiker climbs a steep hill", enc)[0] == "a person climbs a steep hill"
+    for kept in ("pick apples from the high branches of a tree", "a man jumps", "a waiter hands a menu to a guest"):
+        assert plain_person(kept, enc)[0] == kept
+    plan = embedded_plan("a toddler wobbles across the rug", 1, 5.0, lambda: load_vocabulary(None))
+    assert plan.segments[0].prompt == "a person wobbles across the rug"

@@ -32,7 +32,7 @@ from interplay.planner.manner.holds import continues_hold
 from interplay.planner.manner.struck import onset_poses
 from interplay.planner.manner.travel import direction, untangle
 from interplay.planner.pair.actors import actors as who_acts
-from interplay.planner.pair.named import plain_people
+from interplay.planner.pair.named import plain_people, plain_person
 from interplay.planner.pair.roles import exchange, exchange_steps
 from interplay.planner.resolve import coverage_of, not_understood, resolve
 from interplay.planner.schema import MAX_REPEAT, Plan
@@ -172,6 +172,9 @@ def embedded_plan(prompt: str, persons: int = 1, seconds: float | None = None,
         reasons.extend(notes)
     if persons == 2 and vocabulary is not None:     # "a waiter … a guest": one person … the other
         text, notes = plain_people(text, get_encoder())
+        reasons.extend(notes)
+    elif persons == 1 and vocabulary is not None:   # "a toddler wobbles …": a person wobbles …
+        text, notes = plain_person(text, get_encoder())
         reasons.extend(notes)
     text, notes, named = lexicon.rewrite_named(text)
     reasons.extend(notes)

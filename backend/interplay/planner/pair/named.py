@@ -27,3 +27,18 @@ def plain_people(text: str, encoder) -> tuple[str, list[str]]:
     if out == text:
         return text, []
     return out, [f"people: '{text}' read as '{out}' (the people named by role)"]
+
+
+def plain_person(text: str, encoder) -> tuple[str, list[str]]:
+    """(text, reasons) for one person: a prompt that opens with someone the planner does not
+    know ("a toddler wobbles across the rug", "a tired hiker climbs a steep hill") opens with
+    "a person" instead, so that the words after them are read as their motion (they were kept
+    with the noun: "a person toddler wobbles …"). Anyone named later is kept as written."""
+    if text.split(" ", 1)[0].lower() not in ("a", "an", "the") or neutral(text, encoder, keep=KNOWN) == text:
+        return text, []                 # a bare first word may be a verb ("pick apples …")
+    out = neutral(text, encoder)
+    if not out.startswith("one person ") or "the other person" in out or "two people" in out:
+        return text, []
+    out = "a person " + out[len("one person "):]
+    return out, [f"person: '{text}' read as '{out}' (the person named by role)"]
+
