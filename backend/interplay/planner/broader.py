@@ -1,7 +1,8 @@
 """A verb the catalogue lacks, read as the nearest broader verb it knows, through WordNet's verb
 hierarchy (catalogue/wordnet.py): "heft" is a kind of "lift", "lob" of "throw", "duel" of
-"fight", "flee" of "run". The text encoder places a rare verb near words that merely look or
-sound alike; WordNet says what it is a kind of. Only the first two senses of a word are read, up
+"fight", "flee" of "run". The text encoder compares a whole clause with the data's captions,
+and a clause with a rare verb is near none of them; WordNet says what the verb is a kind of.
+Only the first two senses of a word are read, up
 to two steps up, in the word kinds that say how a body moves (`broader_senses`), to a sense the
 known verb means in the catalogue (catalogue/senses.toml), and never as a word too general to
 mean a motion ("move", "go": `broader_too_general`) or as a particle ("off").
@@ -33,7 +34,7 @@ SENSES, DEPTH = 2, 2          # senses of a word read, and hypernym steps up fro
 # PRIMITIVE_SIM this is): a broader verb ("hit") would take it from there.
 PRIMITIVE_NEAR = 0.55
 _BANKS: dict[int, np.ndarray] = {}
-_NAMED = ("interaction",)   # gestures and poses are conventions ("salute"): no synonym means them
+_NAMED = ("interaction",)   # gestures and poses are conventions: no synonym means them
 
 
 @dataclass(frozen=True)
@@ -50,10 +51,6 @@ class Broader:
         return f"'{self.said}' read as '{self.word}' (WordNet: to {self.lemma} is {how} to {self.known})"
 
 
-def _lists() -> dict[str, list[str]]:
-    return word_lists()
-
-
 @lru_cache(maxsize=1)
 def _named() -> Phrases:
     """The catalogue's two-person kinds' word forms and set phrases."""
@@ -63,8 +60,7 @@ def _named() -> Phrases:
 
 def known(lemma: str) -> bool:
     """Does the catalogue name this verb (or phrase): a motion verb or the words of a two-person
-    kind? (Not a gesture's or a pose's: a synonym seldom means the convention the catalogue
-    knows, "toast" is another word for "salute" only in drinking to someone.)"""
+    kind? (Not a gesture's or a pose's set phrase: a synonym seldom means the convention.)"""
     if lemma in VERBS and VERBS[lemma].kind != "light":
         return True
     return _named().whole(lemma)
@@ -111,8 +107,8 @@ def broader(word: str) -> Broader | None:
     said = word.lower()
     if not said.isalpha() or _said_known(said):
         return None
-    general = set(_lists()["broader_too_general"])
-    kinds = tuple(_lists()["broader_senses"])
+    general = set(word_lists()["broader_too_general"])
+    kinds = tuple(word_lists()["broader_senses"])
     for lemma in wordnet.lemmas(said):
         for steps, _rank, other, kind, sense in wordnet.above(lemma, SENSES, DEPTH, kinds):
             if other in general or not known(other) or sense not in meant(other):
