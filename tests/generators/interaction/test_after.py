@@ -57,7 +57,7 @@ def test_they_do_it_then_part(router, prompt, kind, check):
 ])
 def test_the_turn_away_steps_instead_of_sliding(router, prompt):
     """A leaver turns round in the interaction's last JOIN frames: each foot stays planted,
-    then steps (lifted) to where the walk starts it; before motion.stepping both feet swung
+    then steps (lifted) to where the walk starts it; before scenes/stepping.py both feet swung
     round the pelvis at up to 1.7 m/s on the ground (the reviewer's foot-skating window)."""
     for seed in (0, 1):
         mo = generate_motion(router.compose, Request(prompt, 2, 6.0, seed))

@@ -11,7 +11,7 @@ the other stays where they are (their role, or standing still).
 The join turns a leaver round over JOIN frames about their own pelvis while their pose blends
 from the interaction's last frame into the walk's first (in each one's own facing, so a half
 turn does not pass the body through itself), the feet stepping round, one after the other
-(motion.stepping), instead of swinging about the pelvis. numpy only.
+(scenes/stepping.py), instead of swinging about the pelvis. numpy only.
 """
 
 from __future__ import annotations
@@ -23,13 +23,13 @@ import numpy as np
 
 from interplay.catalogue.words import words
 from interplay.generators.interaction.bodies import yaw_of
+from interplay.generators.interaction.scenes.stepping import stepped
 from interplay.generators.retrieval.intent import intent
 from interplay.motion import skeleton as sk
 from interplay.motion.ik import ease
 from interplay.motion.kinematics import facing_angle
 from interplay.motion.rotations import yaw_matrix
 from interplay.motion.skeleton import FPS
-from interplay.motion.stepping import stepped
 from interplay.planner.verbs import lookup
 
 # Kinds made of walking already (their own leaving is their words), and the kinds whose
