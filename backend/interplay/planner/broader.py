@@ -100,18 +100,23 @@ def meant(name: str) -> tuple[str, ...]:
     return wordnet.senses(name)[:SENSES]
 
 
-def broader(word: str) -> Broader | None:
+def broader(word: str, then: str | None = "") -> Broader | None:
     """The nearest broader verb the catalogue knows for a word it does not (module doc), or None.
     The sense reached must be one the catalogue's verb means (`meant`): "toss" is another word
-    for "flip" only in throwing, not in the somersault the catalogue's flip is."""
+    for "flip" only in throwing, not in the somersault the catalogue's flip is. `then`: the word
+    after it (None: nothing follows); a verb of one limb or thing (raise, lift, throw) is read
+    only where an object follows: "a person levitates and spins" is not "raises and spins"."""
     said = word.lower()
     if not said.isalpha() or _said_known(said):
         return None
+    bare = then is None or then.lower() in word_lists()["coordinating"] or then.lower() in word_lists()["connectives"]
     general = set(word_lists()["broader_too_general"])
     kinds = tuple(word_lists()["broader_senses"])
     for lemma in wordnet.lemmas(said):
         for steps, _rank, other, kind, sense in wordnet.above(lemma, SENSES, DEPTH, kinds):
             if other in general or not known(other) or sense not in meant(other):
+                continue
+            if bare and other in VERBS and VERBS[other].kind == "part":
                 continue
             head, _, rest = other.partition(" ")
             word_out = forms(head)[_form(said, lemma)] + (f" {rest}" if rest else "")
@@ -147,7 +152,7 @@ def broadened(text: str) -> tuple[str, tuple[Broader, ...]]:
     toks = tokens(text[len(text) - len(lowered):])
     if not toks or toks[0].text.lower() in word_lists()["broader_never"]:
         return text, ()
-    hit = broader(toks[0].text)
+    hit = broader(toks[0].text, toks[1].text if len(toks) > 1 else None)
     if hit is None:
         return text, ()
     at = len(text) - len(lowered)

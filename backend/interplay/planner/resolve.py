@@ -127,7 +127,7 @@ def _broader(action: Action, posture: str, last_parts, reasons, vocab) -> Action
     it, unless a motion primitive makes the words as they are ("bang on a drum": drumming, not
     a hit; `broader.primitive_near`, with the vocabulary's encoder when there is one)."""
     rest = _without_subject(action.text.split())
-    hit = broader(rest[0]) if rest and _unknown_verb(rest) else None
+    hit = broader(rest[0], rest[1] if len(rest) > 1 else None) if rest and _unknown_verb(rest) else None
     if hit is None or (vocab is not None and primitive_near(" ".join(rest), vocab().encode)):
         return None
     new = decompose(" ".join([hit.word, *rest[1:]]), posture, last_parts)
