@@ -117,12 +117,13 @@ def _kind_contact(text: str) -> str:
     "two friends bump fists" is a high five, so "hands"; else "none"."""
     from interplay.catalogue.load import catalogue
     from interplay.catalogue.people import neutral
+    from interplay.planner.verbs import third
     from interplay.text.encoder import get_encoder
     entries = [(a.contact, d) for a in catalogue().of_kind("interaction") for d in a.descriptions]
     if not entries or not text.strip():
         return "none"
-    enc = get_encoder()      # as written and with its people named neutrally ("a waiter … a guest")
-    said = [text, neutral(text, enc)]
+    enc = get_encoder()      # as written and with its people named neutrally ("a waiter … a guest",
+    said = [text, neutral(text, enc, third=third)]     # "hand your coworker a stapler")
     emb = np.asarray(enc.encode(said + [d for _, d in entries]), dtype=np.float64)
     emb /= np.maximum(np.linalg.norm(emb, axis=1, keepdims=True), 1e-12)
     sims = (emb[2:] @ emb[:2].T).max(axis=1)
