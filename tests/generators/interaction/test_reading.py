@@ -48,3 +48,13 @@ def test_hands_held_said_many_ways_are_held(prompt):
     """Not a touch ('grab*', 'hand on the beach') nor a hand-over: the two walk holding hands."""
     script = read(prompt, None, get_encoder())
     assert script is not None and script.kind == "side_by_side" and script.held, script
+
+
+@pytest.mark.parametrize("prompt, kind, approach", [
+    ("two old friends spot each other, walk over and hug", "hug", True),
+    ("he runs over to his friend and gives him a high five", "high_five", True),
+    ("they walk over the bridge together", "together", False),      # over a thing: no approach
+])
+def test_walking_over_to_someone_is_an_approach(prompt, kind, approach):
+    script = read(prompt, None, get_encoder())
+    assert script is not None and script.kind == kind and script.approach is approach
