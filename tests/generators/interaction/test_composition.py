@@ -40,6 +40,8 @@ ASKED = [
     ("a woman shoves a man away", 5, "push", [{"check": "push"}], True),
     ("two friends walk up to each other and hug", 8, "hug", [{"check": "approach", "min_m": 1.0}, {"check": "hug"}], True),
     ("the two high five", 4, "high_five", [{"check": "high_five"}], True),
+    # a short prompt: the walk up leaves the hug a squeezed beat (it used to drop the walk)
+    ("two old friends walk over and hug", 6, "hug", [{"check": "approach", "min_m": 1.0}, {"check": "hug"}], True),
 ]
 
 

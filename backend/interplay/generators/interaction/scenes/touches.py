@@ -25,6 +25,8 @@ from interplay.motion.pair.bases import Base
 
 SPINE3 = sk.JOINT_INDEX["spine3"]
 APPROACH_M = (1.6, 2.4)       # metres each walks when they walk up to each other
+APPROACH_S = 3.0              # s the walking up takes (the start, the walk, the stop) …
+TOUCH_SHARE = 0.55            # … and the least share of a touch's own time it leaves it
 HUG_STEP_M = (0.16, 0.22)     # each steps in this far for a hug
 
 
@@ -48,6 +50,9 @@ def _bodies(c: Cast, kind: str, need_s: float) -> tuple[list[np.ndarray], list[n
     if not c.script.approach:
         stands = standing_pair(c)
         return [s.copy() for s in stands], stands, 0
+    # a short prompt ("walk over and hug", 6 s) gives the touch what the walk leaves, down to
+    # TOUCH_SHARE of its own time (its beat is squeezed to fit: timing.beat)
+    need_s = max(min(need_s, c.frames / sk.FPS - APPROACH_S), TOUCH_SHARE * need_s)
     stop_by = c.frames - int(round(need_s * sk.FPS)) - 10
     arrived = [_arrive(c, p, stop_by) for p in (0, 1)]
     c.report["approach"] = [r for _, _, r in arrived]
