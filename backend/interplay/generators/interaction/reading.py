@@ -63,7 +63,7 @@ def read(prompt: str, roles: dict | None, encoder) -> Script | None:
             script = dataclasses.replace(other, reasons=other.reasons + (
                 f"read with the people named neutrally: '{plain}'",))
     if (script.guessed is not None and script.guessed < OVER_TOGETHER) or script.kind == "together":
-        script = _broader(prompt, roles, encoder, script)
+        script = _broader(plain, roles, encoder, script)
     if script.kind == "together":
         alone = _encoder_only(plain, roles, encoder)
         if alone is not None and alone.kind != "together" and (alone.guessed or 0) >= OVER_TOGETHER:
@@ -72,11 +72,11 @@ def read(prompt: str, roles: dict | None, encoder) -> Script | None:
     return script
 
 
-def _broader(prompt: str, roles: dict | None, encoder, script: Script) -> Script:
-    """The prompt read with each verb the catalogue lacks as the broader verb it knows
-    (`planner.broader`: "lob a beanbag to each other" → "throw …"), people named neutrally,
-    when that reading is the surer one; else `script`."""
-    wide, found = broadened(neutral(prompt, encoder, third=third))
+def _broader(plain: str, roles: dict | None, encoder, script: Script) -> Script:
+    """The prompt with its people named neutrally (`plain`) read with its verb the catalogue
+    lacks as the broader verb it knows (`planner.broader`: "lob a beanbag to each other" →
+    "throw …"), when that reading is the surer one; else `script`."""
+    wide, found = broadened(plain)
     if not found:
         return script
     other = read_script(wide, roles, encoder)
