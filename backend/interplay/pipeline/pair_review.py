@@ -149,8 +149,9 @@ def _missed(specs: list[dict], roles: list[tuple[tuple[int, int], dict]], people
 
 
 def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray
-           ) -> tuple[dict, int]:
-    """The review event of one round and how many of the checks passed (run once each)."""
+           ) -> tuple[dict, int, int]:
+    """The review event of one round, how many of the checks passed and of how many (the
+    interaction's and the roles'; run once each)."""
     roles = role_specs(plan)
     missed = _missed(specs, roles, people)
     failed = {f"asked_{name}": why for name, why in missed}
@@ -169,7 +170,7 @@ def _event(plan: GenerationPlan, r: int, specs: list[dict], people: np.ndarray
             "captions": {}, "summary": f"interaction checks: {n - len(missed)} of {n} passed",
             "score": round((n - len(missed)) / n, 4), "score_kind": "interaction_checks",
             "confirmed": {}, "checks": checks,
-            "instructions": instructions, "verdict": verdict}, n - len(missed)
+            "instructions": instructions, "verdict": verdict}, n - len(missed), n
 
 
 def _made(generator: Generator, req: Request, seed: int) -> tuple[GenerationPlan, np.ndarray]:
@@ -191,7 +192,7 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
     specs = interaction_specs(plan)
     if not specs or people.shape[0] != 2:
         return people, plan, None
-    event, best = _event(plan, first_round, specs, people)
+    event, best, of = _event(plan, first_round, specs, people)
     emit(event)
     rounds, corrections = [event], []
     rng = np.random.default_rng([plan.seed % 2**63, 15])
@@ -210,11 +211,11 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
             corrections.append(correction)
             emit(correction)
             break
-        after, got = _event(new_plan, first_round + k + 1, specs, new)
+        after, got, got_of = _event(new_plan, first_round + k + 1, specs, new)
         correction["score_after"] = after["score"]
         if got > best and new.shape[1] == people.shape[1] and _bounds_ok(new, new_plan):
             correction["accepted"] = True
-            people, plan, best = new, new_plan, got
+            people, plan, best, of = new, new_plan, got, got_of
             plan.reasons.append(f"interaction review: made again with seed {seed} "
                                 f"({instr['reason']})")
             n = people.shape[1]
@@ -239,4 +240,4 @@ def review_interaction(generator: Generator, req: Request, plan: GenerationPlan,
         emit(final)
         rounds.append(final)
     return people, plan, {"checks": specs, "rounds": rounds, "corrections": corrections,
-                          "passed": best, "of": len(specs) + len(role_specs(plan))}
+                          "passed": best, "of": of}
