@@ -304,6 +304,7 @@ class TwoPeople:
 def two_people(nouns: tuple[str, ...]) -> TwoPeople:
     """The two-person patterns for these nouns (compiled once per noun list)."""
     n = "|".join(nouns)
+    joins = listed("coordinating")
     partner = (rf"(?:the\s+other(?:\s+(?:one|person))?|him|her(?!\s+(?:{n})\b)|them|"
                rf"(?:a|an|the|his|her|their)\s+(?:{n}))")
     return TwoPeople(
@@ -311,8 +312,8 @@ def two_people(nouns: tuple[str, ...]) -> TwoPeople:
         subject=rx(rf"^(?P<subj>one(?:\s+(?:of\s+them|person))?|someone|a\s+person|he|she|"
                    rf"the\s+(?:first|second|leader|follower)(?:\s+(?:one|person))?|"
                    rf"(?:a|an|the)\s+(?:{n}))\s+(?P<rest>.+)$"),
-        coordinated=rx(rf"^(?P<head>.+?)(?:\s*,\s*|\s+)(?:and\s+|while\s+|as\s+|whereas\s+|but\s+)?"
-                       rf"(?P<word>and\s+|while\s+|as\s+|whereas\s+|but\s+|)?(?:{_OTHER_SUBJECT})\s+"
+        coordinated=rx(rf"^(?P<head>.+?)(?:\s*,\s*|\s+)(?:(?:{joins})\s+)?"
+                       rf"(?P<word>(?:{joins})\s+|)?(?:{_OTHER_SUBJECT})\s+"
                        rf"(?P<answer>\w+.*)$"),
         named=rx(rf"\b(?:a|an|the|his|her|their)\s+({n})\b"),
         done_to=rx(rf"^(?P<verb>\w+)\s+(?:(?:at|to|towards|with|on|into)\s+)?(?:{partner})\b(?P<rest>.*)$"),
