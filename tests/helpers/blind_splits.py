@@ -1,18 +1,55 @@
 """What every blind prompt split (`fresh2`, `fresh3`, `fresh4`) must hold, shared by their
-tests: each check and parameter it names exists and runs on a capture, and the command line and
-the report take the split."""
+tests: its file holds it alone, every two-person prompt checks something between the two, ids
+and prompts are unique and new, each check and parameter it names exists and runs on a capture,
+and the command line and the report take the split."""
 
 from __future__ import annotations
 
+import collections
 import inspect
 import json
+from pathlib import Path
 
 import numpy as np
 
 from interplay.eval.prompts.report import build_report, format_table
-from interplay.eval.prompts.suite import Prompt, category_labels
+from interplay.eval.prompts.suite import SPLIT_FILES, SPLITS, Prompt, category_labels, load_split, load_suite
 from interplay.motion.checks.named import CHECKS, run_check
 from interplay.motion.clip import default_clips
+
+
+def assert_file_holds_only(split: str, path: Path, blind: bool = True) -> list[Prompt]:
+    """The split's file validates, holds that split alone and is the suite's file for it; its
+    prompts."""
+    raw = json.loads(path.read_text())
+    assert {"about", "version", "prompts"} <= set(raw)
+    if blind:
+        assert "blind" in raw["about"]
+    ps = load_split(split)
+    assert len(ps) == len(raw["prompts"]) == len(load_suite(path))
+    assert collections.Counter(p.split for p in ps) == {split: len(ps)}
+    assert split in SPLITS and SPLIT_FILES[split] == path
+    return ps
+
+
+def assert_pairs_check_between(two: list[Prompt]) -> None:
+    """Every two-person prompt checks something between the two people."""
+    assert all(any(CHECKS[c["check"]].persons == 2 or c.get("person") == "both" for c in p.checks)
+               for p in two)
+
+
+def assert_unique_and_new(prompts: list[Prompt], others: list[Prompt], texts_new: bool = True) -> None:
+    """Ids and prompt texts unique within the split; ids (and texts, unless `texts_new` is off)
+    in none of `others`. Only the repeats are named: a failure must not print the other splits'
+    prompts."""
+    ids = [p.id for p in prompts]
+    assert len(set(ids)) == len(ids)
+    texts = [p.prompt.lower() for p in prompts]
+    assert len(set(texts)) == len(texts)
+    assert not set(ids) & {p.id for p in others}
+    if texts_new:
+        repeated = sorted(set(texts) & {p.prompt.lower() for p in others})
+        assert not repeated
 
 
 def assert_checks_and_parameters_exist(prompts: list[Prompt]) -> None:

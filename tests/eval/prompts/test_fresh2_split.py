@@ -5,16 +5,15 @@ line and the report take the split."""
 
 from __future__ import annotations
 
-import collections
-import json
-
-from interplay.eval.prompts.suite import FRESH, FRESH2, SPLITS, load_split, load_suite
-from interplay.motion.checks.named import CHECKS
+from interplay.eval.prompts.suite import FRESH, FRESH2, load_split, load_suite
 from tests.helpers.blind_splits import (
     assert_checks_and_parameters_exist,
     assert_checks_run_on_a_capture,
     assert_command_line_reads,
+    assert_file_holds_only,
+    assert_pairs_check_between,
     assert_report_names_categories,
+    assert_unique_and_new,
 )
 
 
@@ -23,12 +22,7 @@ def fresh2():
 
 
 def test_the_file_validates_and_holds_only_fresh2():
-    raw = json.loads(FRESH2.read_text())
-    assert {"about", "version", "prompts"} <= set(raw)
-    ps = fresh2()
-    assert len(ps) == len(raw["prompts"]) == len(load_suite(FRESH2))
-    assert collections.Counter(p.split for p in ps) == {"fresh2": len(ps)}
-    assert "fresh2" in SPLITS
+    assert_file_holds_only("fresh2", FRESH2, blind=False)
 
 
 def test_the_split_has_its_groups():
@@ -39,19 +33,11 @@ def test_the_split_has_its_groups():
     assert all(p.category == "everyday" and p.edit is None for p in one)
     assert all(p.category == "two_person" and p.kind for p in two)
     assert all(4 <= p.seconds <= 8 for p in ps)
-    # every two-person prompt checks something between the two people
-    assert all(any(CHECKS[c["check"]].persons == 2 or c.get("person") == "both" for c in p.checks)
-               for p in two)
+    assert_pairs_check_between(two)
 
 
 def test_ids_and_prompts_are_unique_and_new():
-    ps = fresh2()
-    ids = [p.id for p in ps]
-    assert len(set(ids)) == len(ids)
-    texts = [p.prompt.lower() for p in ps]
-    assert len(set(texts)) == len(texts)
-    others = {p.id for p in load_suite()} | {p.id for p in load_suite(FRESH)}
-    assert not set(ids) & others
+    assert_unique_and_new(fresh2(), load_suite() + load_suite(FRESH), texts_new=False)
 
 
 def test_every_check_and_parameter_exists():

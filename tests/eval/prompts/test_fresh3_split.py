@@ -6,24 +6,15 @@ the command line and the report take the split."""
 
 from __future__ import annotations
 
-import collections
-import json
-
-from interplay.eval.prompts.suite import (
-    FRESH,
-    FRESH2,
-    FRESH3,
-    SPLIT_FILES,
-    SPLITS,
-    load_split,
-    load_suite,
-)
-from interplay.motion.checks.named import CHECKS
+from interplay.eval.prompts.suite import FRESH, FRESH2, FRESH3, load_split, load_suite
 from tests.helpers.blind_splits import (
     assert_checks_and_parameters_exist,
     assert_checks_run_on_a_capture,
     assert_command_line_reads,
+    assert_file_holds_only,
+    assert_pairs_check_between,
     assert_report_names_categories,
+    assert_unique_and_new,
 )
 
 
@@ -32,13 +23,7 @@ def fresh3():
 
 
 def test_the_file_validates_and_holds_only_fresh3():
-    raw = json.loads(FRESH3.read_text())
-    assert {"about", "version", "prompts"} <= set(raw)
-    assert "blind" in raw["about"]
-    ps = fresh3()
-    assert len(ps) == len(raw["prompts"]) == len(load_suite(FRESH3))
-    assert collections.Counter(p.split for p in ps) == {"fresh3": len(ps)}
-    assert "fresh3" in SPLITS and SPLIT_FILES["fresh3"] == FRESH3
+    assert_file_holds_only("fresh3", FRESH3)
 
 
 def test_the_split_has_its_groups():
@@ -50,22 +35,12 @@ def test_the_split_has_its_groups():
     assert all(p.category == "two_person" and p.kind for p in two)
     assert len({p.kind for p in two}) >= 8
     assert all(4 <= p.seconds <= 8 for p in ps)
-    # every two-person prompt checks something between the two people
-    assert all(any(CHECKS[c["check"]].persons == 2 or c.get("person") == "both" for c in p.checks)
-               for p in two)
+    assert_pairs_check_between(two)
 
 
 def test_ids_and_prompts_are_unique_and_new():
-    ps = fresh3()
-    ids = [p.id for p in ps]
-    assert len(set(ids)) == len(ids)
-    texts = [p.prompt.lower() for p in ps]
-    assert len(set(texts)) == len(texts)
     others = [p for path in (None, FRESH, FRESH2) for p in (load_suite(path) if path else load_suite())]
-    assert not set(ids) & {p.id for p in others}
-    # only the repeats are named (a failure must not print the other splits' prompts)
-    repeated = sorted(set(texts) & {p.prompt.lower() for p in others})
-    assert not repeated
+    assert_unique_and_new(fresh3(), others)
 
 
 def test_every_check_and_parameter_exists():
